@@ -1,0 +1,331 @@
+#include "actors/clock.hpp"
+
+#include <algorithm>
+#include <array>
+#include <map>
+#include <set>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+#include "actors/phase.hpp"
+#include "actors/type_ids.hpp"
+#include "spdlog/spdlog.h"
+
+namespace argus::actors {
+namespace {
+
+// setup --start--> ticking --end_tick reached--> finishing --recorder done--> (quit)
+//                    |  ^
+//   phase: for each phase, tick the due participants, collect every ack (or their death)
+//                    v  |
+//   between ticks: hand events to the recorder, wait for it if it lags, pace to wall clock
+class clock_actor : public caf::event_based_actor {
+ public:
+  clock_actor(caf::actor_config& cfg, clock_settings settings, caf::actor recorder,
+              caf::actor progress)
+      : caf::event_based_actor(cfg),
+        settings_(settings),
+        recorder_(std::move(recorder)),
+        progress_(std::move(progress)) {}
+
+  caf::behavior make_behavior() override {
+    set_down_handler([this](caf::down_msg& msg) { on_down(msg); });
+    monitor(recorder_);
+    return {
+        [this](join_atom, caf::actor& handle, participant_info& info) {
+          pending_joins_.emplace_back(std::move(handle), std::move(info));
+        },
+        [this](retire_atom, std::uint64_t id) { drop(id, /*expected=*/true); },
+        [this](start_atom) -> caf::result<run_result> {
+          if (started_) return caf::make_error(caf::sec::runtime_error, "clock already started");
+          started_ = true;
+          promise_ = make_response_promise();
+          wall_start_ = clock().now();
+          last_progress_ = wall_start_;
+          if (settings_.end_tick <= 0) {
+            finish();
+          } else {
+            begin_tick();
+          }
+          return promise_;
+        },
+        [this](tick_ack& ack) { on_ack(ack); },
+        [this](advance_atom) { begin_tick(); },
+        [this](recorded_atom, std::int64_t) {
+          --unwritten_batches_;
+          if (waiting_for_recorder_ && unwritten_batches_ < settings_.recorder_window) {
+            waiting_for_recorder_ = false;
+            pace();
+          }
+        },
+    };
+  }
+
+ private:
+  struct entry {
+    caf::actor handle;
+    participant_info info;
+    /// Calendar tick of an on-demand participant, or -1 when none is booked.
+    std::int64_t booked = -1;
+  };
+
+  static std::size_t index(phase p) { return static_cast<std::size_t>(p); }
+
+  void apply_joins() {
+    if (pending_joins_.empty()) return;
+    // Canonical order: by id, whatever order the joins arrived in.
+    std::sort(pending_joins_.begin(), pending_joins_.end(),
+              [](const auto& a, const auto& b) { return a.second.id < b.second.id; });
+    for (auto& [handle, info] : pending_joins_) {
+      if (participants_.count(info.id) != 0) {
+        spdlog::warn("clock: participant id {} ({}) joined twice; second join ignored", info.id,
+                     info.name);
+        continue;
+      }
+      monitor(handle);
+      ++joined_;
+      by_address_[handle.address()] = info.id;
+      auto id = info.id;
+      auto& e = participants_[id];
+      e.handle = std::move(handle);
+      e.info = std::move(info);
+      if (e.info.mode == wake_mode::every_tick)
+        every_tick_[index(e.info.tick_phase)].insert(id);
+      else
+        book(id, tick_);
+    }
+    pending_joins_.clear();
+  }
+
+  void book(std::uint64_t id, std::int64_t at) {
+    auto it = participants_.find(id);
+    if (it == participants_.end() || it->second.info.mode != wake_mode::on_demand) return;
+    auto& e = it->second;
+    if (e.booked >= 0 && e.booked <= at) return;
+    auto& cal = calendar_[index(e.info.tick_phase)];
+    if (e.booked >= 0) unbook(cal, e.booked, id);
+    cal[at].insert(id);
+    e.booked = at;
+  }
+
+  static void unbook(std::map<std::int64_t, std::set<std::uint64_t>>& cal, std::int64_t at,
+                     std::uint64_t id) {
+    auto slot = cal.find(at);
+    if (slot == cal.end()) return;
+    slot->second.erase(id);
+    if (slot->second.empty()) cal.erase(slot);
+  }
+
+  void begin_tick() {
+    phase_ = 0;
+    run_phases();
+  }
+
+  // Runs phases until one has participants to wait for, or the tick is over.
+  void run_phases() {
+    while (phase_ < phase_count) {
+      apply_joins();  // joins sent from inside a tick precede their sender's ack
+      collect_due();
+      if (!awaiting_.empty()) {
+        for (auto id : awaiting_)
+          send(participants_[id].handle, tick_atom_v, tick_, static_cast<std::uint8_t>(phase_));
+        return;
+      }
+      ++phase_;
+    }
+    finish_tick();
+  }
+
+  void collect_due() {
+    awaiting_ = every_tick_[phase_];
+    auto& cal = calendar_[phase_];
+    while (!cal.empty() && cal.begin()->first <= tick_) {
+      for (auto id : cal.begin()->second) {
+        participants_[id].booked = -1;
+        awaiting_.insert(id);
+      }
+      cal.erase(cal.begin());
+    }
+  }
+
+  void on_ack(tick_ack& ack) {
+    if (ack.tick != tick_ || awaiting_.count(ack.participant) == 0) {
+      spdlog::warn("clock: stray ack from participant {} for tick {} (now tick {})",
+                   ack.participant, ack.tick, tick_);
+      return;
+    }
+    for (auto& ev : ack.events) batch_.push_back(std::move(ev));
+    if (ack.next_wakeup != no_wakeup) book(ack.participant, std::max(ack.next_wakeup, tick_ + 1));
+    for (auto id : ack.woken) {
+      auto it = participants_.find(id);
+      if (it == participants_.end()) continue;
+      // Mail for a later phase is read this tick; for this or an earlier phase, next tick.
+      auto later = index(it->second.info.tick_phase) > phase_;
+      book(id, later ? tick_ : tick_ + 1);
+    }
+    awaiting_.erase(ack.participant);
+    if (awaiting_.empty()) {
+      ++phase_;
+      run_phases();
+    }
+  }
+
+  void on_down(const caf::down_msg& msg) {
+    if (msg.source == recorder_.address()) {
+      // Without its recorder a run would lose its log: stop, and say why.
+      spdlog::error("clock: the recorder stopped ({}); ending the run", to_string(msg.reason));
+      if (promise_.pending())
+        promise_.deliver(
+            caf::make_error(caf::sec::runtime_error, "recorder stopped: " + to_string(msg.reason)));
+      shut_down();
+      return;
+    }
+    auto it = by_address_.find(msg.source);
+    if (it == by_address_.end()) return;
+    auto id = it->second;
+    by_address_.erase(it);
+    if (retired_.erase(id) != 0) return;  // already dropped when it was retired
+    if (participants_.count(id) == 0) return;
+    auto name = participants_[id].info.name;
+    spdlog::warn(
+        "clock: participant {} died unexpectedly at tick {} ({}); dropped from the barrier", name,
+        tick_, to_string(msg.reason));
+    unexpected_down_.push_back(name);
+    sim_event ev;
+    ev.tick = tick_;
+    ev.phase = static_cast<std::uint8_t>(std::min<std::size_t>(phase_, phase_count - 1));
+    ev.source_id = id;
+    ev.seq = 0xffffffffu;  // after anything the participant itself emitted this tick
+    ev.source = name;
+    ev.kind = "participant_down";
+    ev.fields_json = "\"expected\":false";
+    batch_.push_back(std::move(ev));
+    drop(id, /*expected=*/false);
+  }
+
+  void drop(std::uint64_t id, bool expected) {
+    auto it = participants_.find(id);
+    if (it == participants_.end()) return;
+    auto& e = it->second;
+    if (expected) retired_.insert(id);
+    every_tick_[index(e.info.tick_phase)].erase(id);
+    if (e.booked >= 0) unbook(calendar_[index(e.info.tick_phase)], e.booked, id);
+    participants_.erase(it);
+    if (awaiting_.erase(id) != 0 && awaiting_.empty() && started_ && !finished_) {
+      ++phase_;
+      run_phases();
+    }
+  }
+
+  void finish_tick() {
+    if (!batch_.empty()) {
+      std::stable_sort(batch_.begin(), batch_.end(), canonical_less);
+      send(recorder_, record_atom_v, tick_, std::move(batch_));
+      batch_.clear();
+      ++unwritten_batches_;
+    }
+    ++tick_;
+    report_progress(false);
+    if (tick_ >= settings_.end_tick) {
+      finish();
+      return;
+    }
+    if (unwritten_batches_ >= settings_.recorder_window) {
+      waiting_for_recorder_ = true;
+      return;
+    }
+    pace();
+  }
+
+  void pace() {
+    if (settings_.speed <= 0.0) {
+      send(this, advance_atom_v);
+      return;
+    }
+    auto due =
+        wall_start_ + std::chrono::duration_cast<caf::timespan>(std::chrono::duration<double>(
+                          static_cast<double>(tick_) * settings_.tick_seconds / settings_.speed));
+    auto now = clock().now();
+    if (due <= now)
+      send(this, advance_atom_v);
+    else
+      delayed_send(this, due - now, advance_atom_v);
+  }
+
+  void report_progress(bool force) {
+    if (!progress_) return;
+    auto now = clock().now();
+    if (!force && now - last_progress_ < settings_.progress_interval) return;
+    last_progress_ = now;
+    send(progress_, progress_atom_v, tick_, settings_.end_tick, wall_seconds(now));
+  }
+
+  double wall_seconds(caf::actor_clock::time_point now) const {
+    return std::chrono::duration<double>(now - wall_start_).count();
+  }
+
+  void finish() {
+    finished_ = true;
+    report_progress(true);
+    run_result result;
+    result.ticks = tick_;
+    result.virtual_seconds = static_cast<double>(tick_) * settings_.tick_seconds;
+    result.wall_seconds = wall_seconds(clock().now());
+    result.participants = joined_;
+    result.unexpected_down = unexpected_down_;
+    request(recorder_, caf::infinite, done_atom_v, std::move(result))
+        .then(
+            [this](run_result& final_result) {
+              promise_.deliver(std::move(final_result));
+              shut_down();
+            },
+            [this](caf::error& err) {
+              promise_.deliver(std::move(err));
+              shut_down();
+            });
+  }
+
+  void shut_down() {
+    for (auto& [id, e] : participants_) {
+      demonitor(e.handle);
+      send_exit(e.handle, caf::exit_reason::user_shutdown);
+    }
+    participants_.clear();
+    quit();
+  }
+
+  clock_settings settings_;
+  caf::actor recorder_;
+  caf::actor progress_;
+  caf::response_promise promise_;
+  bool started_ = false;
+  bool finished_ = false;
+
+  std::map<std::uint64_t, entry> participants_;
+  std::unordered_map<caf::actor_addr, std::uint64_t> by_address_;
+  std::vector<std::pair<caf::actor, participant_info>> pending_joins_;
+  std::set<std::uint64_t> retired_;
+  std::uint64_t joined_ = 0;
+  std::vector<std::string> unexpected_down_;
+  std::array<std::set<std::uint64_t>, phase_count> every_tick_;
+  std::array<std::map<std::int64_t, std::set<std::uint64_t>>, phase_count> calendar_;
+
+  std::int64_t tick_ = 0;
+  std::size_t phase_ = 0;
+  std::set<std::uint64_t> awaiting_;
+  std::vector<sim_event> batch_;
+  std::size_t unwritten_batches_ = 0;
+  bool waiting_for_recorder_ = false;
+  caf::actor_clock::time_point wall_start_;
+  caf::actor_clock::time_point last_progress_;
+};
+
+}  // namespace
+
+caf::actor spawn_clock(caf::actor_system& system, clock_settings settings, caf::actor recorder,
+                       caf::actor progress) {
+  return system.spawn<clock_actor>(settings, std::move(recorder), std::move(progress));
+}
+
+}  // namespace argus::actors

@@ -1,0 +1,46 @@
+#pragma once
+
+#include <chrono>
+#include <cstddef>
+#include <cstdint>
+
+#include "caf/fwd.hpp"
+
+namespace argus::actors {
+
+/// How a run's clock paces and ends the run.
+struct clock_settings {
+  /// The run ends after this many ticks.
+  std::int64_t end_tick = 0;
+  /// Virtual seconds per tick (one video frame).
+  double tick_seconds = 1.0 / 15.0;
+  /// 1 = paced to wall clock, N = N times faster, 0 = free-running.
+  double speed = 0.0;
+  /// How many ticks of events the recorder may have unwritten before the clock waits for it.
+  std::size_t recorder_window = 16;
+  /// How often (wall time) the progress observer hears from the clock.
+  std::chrono::milliseconds progress_interval{250};
+};
+
+/// Spawns the lockstep virtual-time clock (DESIGN.md, "Time").
+///
+/// Messages it understands:
+/// - `(join_atom, actor, participant_info)`: register a participant; takes effect at the next
+///   tick boundary. Participants of a phase are ticked in id order.
+/// - `(start_atom)` -> `run_result`: run every tick up to `end_tick`; the answer comes when the
+///   recorder has written everything.
+/// - `(retire_atom, uint64 id)`: a participant is about to be killed on purpose (a fault);
+///   it leaves the barrier at once and its death is not reported as unexpected.
+/// - `tick_ack` from participants, `(recorded_atom, int64 tick)` from the recorder.
+///
+/// Each tick, for each phase in order, it sends `(tick_atom, int64 tick, uint8 phase)` to
+/// every participant due in that phase and waits for all their `tick_ack`s. It monitors every
+/// participant: one that dies is dropped from the barrier at once, logged, and the run goes
+/// on. After the last phase it sends the tick's events, in canonical order, as
+/// `(record_atom, int64 tick, std::vector<sim_event>)` to `recorder`. `progress`, if valid,
+/// receives `(progress_atom, int64 tick, int64 end_tick, double wall_seconds)` every
+/// `progress_interval`.
+caf::actor spawn_clock(caf::actor_system& system, clock_settings settings, caf::actor recorder,
+                       caf::actor progress);
+
+}  // namespace argus::actors

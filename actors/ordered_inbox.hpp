@@ -1,0 +1,54 @@
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+namespace argus::actors {
+
+/// Where and when a message between participants was sent; orders mail canonically.
+struct mail_stamp {
+  std::int64_t tick = 0;
+  std::uint8_t phase = 0;
+  std::uint64_t sender = 0;
+  /// Per-sender counter: the order in which the sender sent.
+  std::uint64_t seq = 0;
+
+  friend auto operator<=>(const mail_stamp&, const mail_stamp&) = default;
+};
+
+/// Buffers mail between participants and releases it in a canonical order, so a run does not
+/// depend on the order in which different senders' messages reached the mailbox.
+///
+/// Mail stamped in the receiver's own (tick, phase) or later is held back: a peer of the same
+/// phase may or may not have sent it yet when the receiver runs, so reading it now would make
+/// the run depend on thread timing. It is read at the receiver's next turn instead.
+template <class Payload>
+class ordered_inbox {
+ public:
+  /// Stores one message.
+  void put(mail_stamp stamp, Payload payload) { mail_.emplace_back(stamp, std::move(payload)); }
+
+  /// Removes and returns, in canonical order, all mail sent before (`tick`, `phase`).
+  std::vector<std::pair<mail_stamp, Payload>> take_due(std::int64_t tick, std::uint8_t phase) {
+    auto due_end = std::partition(mail_.begin(), mail_.end(), [&](const auto& m) {
+      return std::tie(m.first.tick, m.first.phase) < std::tie(tick, phase);
+    });
+    std::vector<std::pair<mail_stamp, Payload>> due(std::make_move_iterator(mail_.begin()),
+                                                    std::make_move_iterator(due_end));
+    mail_.erase(mail_.begin(), due_end);
+    std::sort(due.begin(), due.end(),
+              [](const auto& a, const auto& b) { return a.first < b.first; });
+    return due;
+  }
+
+  /// Number of messages held.
+  std::size_t size() const noexcept { return mail_.size(); }
+
+ private:
+  std::vector<std::pair<mail_stamp, Payload>> mail_;
+};
+
+}  // namespace argus::actors

@@ -1,0 +1,20 @@
+#pragma once
+
+#include <cstdint>
+
+namespace argus::actors {
+
+/// Stable participant ids, derived from the scenario rather than spawn order, so that the
+/// canonical order of ticks, mail and events is the same in every run. Ranges do not overlap.
+namespace participant_ids {
+
+/// The scenario script (operator tasks and scheduled faults).
+inline constexpr std::uint64_t script = 1;
+
+/// Camera node with scenario id `camera_id` (>= 1).
+constexpr std::uint64_t camera(int camera_id) noexcept {
+  return 1'000'000ULL + static_cast<std::uint64_t>(camera_id);
+}
+
+}  // namespace participant_ids
+}  // namespace argus::actors

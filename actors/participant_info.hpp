@@ -1,0 +1,30 @@
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "actors/phase.hpp"
+
+namespace argus::actors {
+
+/// When the clock ticks a participant.
+enum class wake_mode : std::uint8_t {
+  every_tick = 0,  ///< in its phase of every tick (cameras that sense each frame)
+  on_demand = 1,   ///< only when it asked for a tick, or someone sent it mail (idle links)
+};
+
+/// What a participant tells the clock when it joins. The id is stable across runs (derived
+/// from the scenario, not from spawn order) and orders everything canonically.
+struct participant_info {
+  std::uint64_t id = 0;
+  std::string name;
+  phase tick_phase = phase::cameras;
+  wake_mode mode = wake_mode::every_tick;
+};
+
+template <class Inspector>
+typename Inspector::result_type inspect(Inspector& f, participant_info& x) {
+  return f(x.id, x.name, x.tick_phase, x.mode);
+}
+
+}  // namespace argus::actors

@@ -1,0 +1,29 @@
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace argus::actors {
+
+/// What a finished run reports (the clock fills the timing, the recorder the event counts);
+/// written to `summary.json`.
+struct run_result {
+  std::int64_t ticks = 0;
+  double virtual_seconds = 0.0;
+  double wall_seconds = 0.0;
+  std::uint64_t participants = 0;
+  /// Participants that died without being retired by a fault (names, in order noticed).
+  std::vector<std::string> unexpected_down;
+  std::uint64_t events_total = 0;
+  std::map<std::string, std::uint64_t> events_by_kind;
+};
+
+template <class Inspector>
+typename Inspector::result_type inspect(Inspector& f, run_result& x) {
+  return f(x.ticks, x.virtual_seconds, x.wall_seconds, x.participants, x.unexpected_down,
+           x.events_total, x.events_by_kind);
+}
+
+}  // namespace argus::actors

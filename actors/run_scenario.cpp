@@ -1,0 +1,78 @@
+#include "actors/run_scenario.hpp"
+
+#include <cmath>
+#include <map>
+#include <stdexcept>
+#include <thread>
+
+#include "actors/camera_node.hpp"
+#include "actors/clock.hpp"
+#include "actors/progress_printer.hpp"
+#include "actors/recorder.hpp"
+#include "actors/scenario_script.hpp"
+#include "actors/system_config.hpp"
+#include "actors/type_ids.hpp"
+
+namespace argus::actors {
+
+std::filesystem::path output_dir_of(const config::scenario& scenario) {
+  if (!scenario.run.output_dir.empty()) return scenario.run.output_dir;
+  return std::filesystem::path("out") / (scenario.name.empty() ? "run" : scenario.name);
+}
+
+run_outcome run_scenario(const config::scenario& scenario, bool show_progress) {
+  auto threads = scenario.run.threads != 0 ? scenario.run.threads
+                                           : std::max(1u, std::thread::hardware_concurrency());
+  system_config cfg(threads);
+  caf::actor_system system{cfg};
+
+  run_outcome outcome;
+  outcome.output_dir = output_dir_of(scenario);
+  const double tick_seconds = scenario.run.tick.count();
+
+  recorder_settings rec;
+  rec.output_dir = outcome.output_dir;
+  rec.scenario = scenario.name;
+  rec.seed = scenario.run.seed;
+  rec.tick_seconds = tick_seconds;
+  rec.threads = threads;
+  rec.speed = scenario.run.speed;
+  auto recorder = spawn_recorder(system, rec);
+
+  caf::actor progress;
+  if (show_progress) progress = spawn_progress_printer(system, tick_seconds);
+
+  clock_settings cs;
+  cs.end_tick = static_cast<std::int64_t>(std::llround(scenario.run.duration / scenario.run.tick));
+  cs.tick_seconds = tick_seconds;
+  cs.speed = scenario.run.speed;
+  auto clock = spawn_clock(system, cs, recorder, progress);
+
+  // Joins go out from this thread, in this order, before `start`: enqueued in program order,
+  // they all reach the clock before it starts.
+  std::map<int, caf::actor> cameras;
+  for (const auto& cam : scenario.cameras) {
+    auto node = spawn_camera_node(system, cam);
+    caf::anon_send(clock, join_atom_v, node, camera_participant(cam));
+    cameras.emplace(cam.id, node);
+  }
+  auto script = spawn_scenario_script(system, scenario, clock, std::move(cameras));
+  caf::anon_send(clock, join_atom_v, script, script_participant());
+
+  std::string failure;
+  {
+    caf::scoped_actor self{system};
+    self->request(clock, caf::infinite, start_atom_v)
+        .receive([&](run_result& r) { outcome.result = std::move(r); },
+                 [&](caf::error& err) { failure = system.render(err); });
+  }
+  if (progress) caf::anon_send_exit(progress, caf::exit_reason::user_shutdown);
+  if (!failure.empty()) {
+    caf::anon_send_exit(clock, caf::exit_reason::user_shutdown);
+    caf::anon_send_exit(recorder, caf::exit_reason::user_shutdown);
+    throw std::runtime_error("run failed: " + failure);
+  }
+  return outcome;
+}
+
+}  // namespace argus::actors

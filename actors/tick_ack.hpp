@@ -1,0 +1,35 @@
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "actors/sim_event.hpp"
+
+namespace argus::actors {
+
+/// Sentinel for tick_ack::next_wakeup: no tick wanted until someone sends mail.
+inline constexpr std::int64_t no_wakeup = -1;
+
+/// A participant's answer to a tick: done with tick `tick`, wants to be ticked again at
+/// `next_wakeup` (on-demand participants only), sent mail to the participants in `woken`
+/// (so the clock ticks them to read it), and produced `events`.
+///
+/// Contract: a participant sends all its mail *before* its ack. Local CAF sends enqueue
+/// synchronously, so once the clock holds every ack of a phase, every message of that phase
+/// sits in its receiver's mailbox ahead of the receiver's next tick.
+struct tick_ack {
+  std::uint64_t participant = 0;
+  std::int64_t tick = 0;
+  std::int64_t next_wakeup = no_wakeup;
+  std::vector<std::uint64_t> woken;
+  std::vector<sim_event> events;
+
+  friend bool operator==(const tick_ack&, const tick_ack&) = default;
+};
+
+template <class Inspector>
+typename Inspector::result_type inspect(Inspector& f, tick_ack& x) {
+  return f(x.participant, x.tick, x.next_wakeup, x.woken, x.events);
+}
+
+}  // namespace argus::actors

@@ -1,0 +1,33 @@
+#pragma once
+
+// Every message type and atom of the actor layer, registered once (STYLE.md). Include this
+// header, not caf/all.hpp piecemeal, wherever argus messages are sent or matched.
+
+#include <cstdint>
+#include <vector>
+
+#include "actors/participant_info.hpp"
+#include "actors/run_result.hpp"
+#include "actors/sim_event.hpp"
+#include "actors/tick_ack.hpp"
+#include "caf/all.hpp"
+
+CAF_BEGIN_TYPE_ID_BLOCK(argus, caf::first_custom_type_id)
+
+CAF_ADD_TYPE_ID(argus, (argus::actors::sim_event))
+CAF_ADD_TYPE_ID(argus, (std::vector<argus::actors::sim_event>))
+CAF_ADD_TYPE_ID(argus, (argus::actors::participant_info))
+CAF_ADD_TYPE_ID(argus, (argus::actors::tick_ack))
+CAF_ADD_TYPE_ID(argus, (argus::actors::run_result))
+
+CAF_ADD_ATOM(argus, argus::actors, tick_atom, "tick")
+CAF_ADD_ATOM(argus, argus::actors, join_atom, "join")
+CAF_ADD_ATOM(argus, argus::actors, retire_atom, "retire")
+CAF_ADD_ATOM(argus, argus::actors, start_atom, "start")
+CAF_ADD_ATOM(argus, argus::actors, advance_atom, "advance")
+CAF_ADD_ATOM(argus, argus::actors, record_atom, "record")
+CAF_ADD_ATOM(argus, argus::actors, recorded_atom, "recorded")
+CAF_ADD_ATOM(argus, argus::actors, done_atom, "done")
+CAF_ADD_ATOM(argus, argus::actors, progress_atom, "progress")
+
+CAF_END_TYPE_ID_BLOCK(argus)

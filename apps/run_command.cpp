@@ -1,0 +1,111 @@
+#include <unistd.h>
+
+#include <iostream>
+#include <optional>
+
+#include "actors/run_scenario.hpp"
+#include "apps/commands.hpp"
+#include "config/duration.hpp"
+#include "config/scenario_error.hpp"
+#include "config/scenario_loader.hpp"
+#include "fmt/format.h"
+#include "nlohmann/json.hpp"
+
+namespace argus::apps {
+namespace {
+
+struct run_arguments {
+  std::string scenario;
+  std::optional<std::uint64_t> seed;
+  std::optional<unsigned> threads;
+  std::optional<double> speed;
+  std::optional<std::string> duration;
+  std::optional<std::string> out;
+  bool json = false;
+  bool no_progress = false;
+};
+
+// Command-line overrides are validated like the file's own values, and named as options.
+void apply_overrides(const run_arguments& args, config::scenario& s) {
+  if (args.seed) s.run.seed = *args.seed;
+  if (args.threads) s.run.threads = *args.threads;
+  if (args.speed) s.run.speed = *args.speed;
+  if (args.out) s.run.output_dir = *args.out;
+  if (args.duration) {
+    auto d = config::parse_duration(*args.duration);
+    if (!d || d->count() <= 0.0)
+      throw CLI::ValidationError(
+          "--duration",
+          fmt::format("expected a positive duration with a unit, e.g. '2 min', got '{}'",
+                      *args.duration));
+    s.run.duration = *d;
+  }
+}
+
+void print_outcome(const run_arguments& args, const config::scenario& s,
+                   const actors::run_outcome& outcome) {
+  const auto& r = outcome.result;
+  if (args.json) {
+    nlohmann::json j;
+    j["scenario"] = s.name;
+    j["seed"] = s.run.seed;
+    j["ticks"] = r.ticks;
+    j["virtual_seconds"] = r.virtual_seconds;
+    j["wall_seconds"] = r.wall_seconds;
+    j["events_total"] = r.events_total;
+    j["events_by_kind"] = r.events_by_kind;
+    j["unexpected_down"] = r.unexpected_down;
+    j["events"] = (outcome.output_dir / "events.jsonl").string();
+    j["summary"] = (outcome.output_dir / "summary.json").string();
+    std::cout << j.dump() << '\n';
+    return;
+  }
+  std::cout << fmt::format(
+      "{}: {} ticks, {:.1f} s simulated in {:.2f} s wall ({:.1f}x real time), {} events\n", s.name,
+      r.ticks, r.virtual_seconds, r.wall_seconds,
+      r.wall_seconds > 0 ? r.virtual_seconds / r.wall_seconds : 0.0, r.events_total);
+  std::cout << "  events:  " << (outcome.output_dir / "events.jsonl").string() << '\n';
+  std::cout << "  summary: " << (outcome.output_dir / "summary.json").string() << '\n';
+  if (!r.unexpected_down.empty())
+    std::cout << "  participants that died unexpectedly: " << r.unexpected_down.size() << '\n';
+}
+
+}  // namespace
+
+void add_run_command(CLI::App& app, int& result) {
+  auto* cmd = app.add_subcommand("run", "Run a scenario and write its event log and summary");
+  auto args = std::make_shared<run_arguments>();
+  cmd->add_option("SCENARIO", args->scenario, "Scenario YAML file")->required();
+  cmd->add_option("--seed", args->seed, "Run seed (overrides run.seed)");
+  cmd->add_option("--threads", args->threads, "CAF scheduler worker threads (0 = all cores)")
+      ->check(CLI::Range(0u, 256u));
+  cmd->add_option("--speed", args->speed,
+                  "1 = paced to wall clock, N = N times faster, 0 = free-running")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--duration", args->duration, "Virtual duration, e.g. '90 s' or '2 min'");
+  cmd->add_option("--out", args->out, "Output directory (default out/<scenario name>)");
+  cmd->add_flag("--json", args->json, "Print the outcome as one JSON object");
+  cmd->add_flag("--no-progress", args->no_progress, "No progress line, even on a terminal");
+  cmd->callback([args, &result] {
+    config::scenario scenario;
+    try {
+      scenario = config::load_scenario(args->scenario);
+    } catch (const config::scenario_error& e) {
+      std::cerr << e.what() << '\n';
+      result = bad_input;
+      return;
+    }
+    apply_overrides(*args, scenario);
+    try {
+      bool progress = !args->no_progress && isatty(STDERR_FILENO) != 0;
+      auto outcome = actors::run_scenario(scenario, progress);
+      print_outcome(*args, scenario, outcome);
+      result = ok;
+    } catch (const std::exception& e) {
+      std::cerr << "argus run: " << e.what() << '\n';
+      result = run_failed;
+    }
+  });
+}
+
+}  // namespace argus::apps

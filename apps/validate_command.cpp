@@ -1,0 +1,29 @@
+#include <cstdio>
+#include <iostream>
+
+#include "apps/commands.hpp"
+#include "config/scenario_error.hpp"
+#include "config/scenario_loader.hpp"
+#include "config/scenario_writer.hpp"
+
+namespace argus::apps {
+
+void add_validate_command(CLI::App& app, int& result) {
+  auto* cmd = app.add_subcommand(
+      "validate",
+      "Check a scenario file and print its effective configuration (defaults filled in) as YAML");
+  auto path = std::make_shared<std::string>();
+  cmd->add_option("SCENARIO", *path, "Scenario YAML file")->required();
+  cmd->callback([path, &result] {
+    try {
+      auto scenario = config::load_scenario(*path);
+      std::cout << config::to_yaml(scenario);
+      result = ok;
+    } catch (const config::scenario_error& e) {
+      std::cerr << e.what() << '\n';
+      result = bad_input;
+    }
+  });
+}
+
+}  // namespace argus::apps

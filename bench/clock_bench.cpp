@@ -1,0 +1,90 @@
+// Ticks per second of the bare clock (issue #2): N participants that do nothing but take part,
+// either idle (on demand, never woken: what an idle link costs) or busy (ticked every tick:
+// the full barrier round trip), on 1 and 2 scheduler threads.
+//
+//   build/bench/clock_bench --benchmark_counters_tabular=true
+
+#include <benchmark/benchmark.h>
+
+#include <filesystem>
+
+#include "actors/clock.hpp"
+#include "actors/recorder.hpp"
+#include "actors/system_config.hpp"
+#include "actors/tick_context.hpp"
+#include "actors/type_ids.hpp"
+
+namespace {
+
+using namespace argus::actors;
+
+caf::behavior bare_participant(caf::event_based_actor* self, std::uint64_t id) {
+  return {
+      [self, id](tick_atom, std::int64_t tick, std::uint8_t) {
+        tick_ack ack;
+        ack.participant = id;
+        ack.tick = tick;
+        self->send(caf::actor_cast<caf::actor>(self->current_sender()), std::move(ack));
+      },
+  };
+}
+
+// Returns the wall seconds the clock reports for `ticks` ticks.
+double run_clock(std::int64_t participants, unsigned threads, bool busy, std::int64_t ticks) {
+  system_config cfg(threads);
+  caf::actor_system sys{cfg};
+  recorder_settings rs;
+  rs.output_dir = std::filesystem::temp_directory_path() / "argus-clock-bench";
+  auto recorder = spawn_recorder(sys, rs);
+  clock_settings cs;
+  cs.end_tick = ticks;
+  auto clock = spawn_clock(sys, cs, recorder, caf::actor{});
+  // Participants spread over the three phases after `faults`.
+  for (std::int64_t i = 0; i < participants; ++i) {
+    auto id = static_cast<std::uint64_t>(i + 1);
+    participant_info info{id, "p", static_cast<phase>(1 + i % 3),
+                          busy ? wake_mode::every_tick : wake_mode::on_demand};
+    caf::anon_send(clock, join_atom_v, sys.spawn(bare_participant, id), info);
+  }
+  double wall = 0.0;
+  caf::scoped_actor self{sys};
+  self->request(clock, caf::infinite, start_atom_v)
+      .receive([&](run_result& r) { wall = r.wall_seconds; }, [](caf::error&) {});
+  return wall;
+}
+
+void bm_clock(benchmark::State& state) {
+  auto participants = state.range(0);
+  auto threads = static_cast<unsigned>(state.range(1));
+  bool busy = state.range(2) != 0;
+  // Enough ticks for a stable figure, few enough to finish when each tick is expensive.
+  std::int64_t ticks = busy ? std::clamp<std::int64_t>(400'000 / participants, 20, 20'000) : 20'000;
+  double total_wall = 0.0;
+  std::int64_t total_ticks = 0;
+  for (auto _ : state) {
+    double wall = run_clock(participants, threads, busy, ticks);
+    state.SetIterationTime(wall);
+    total_wall += wall;
+    total_ticks += ticks;
+  }
+  state.counters["ticks_per_s"] =
+      total_wall > 0 ? static_cast<double>(total_ticks) / total_wall : 0;
+  state.SetLabel(busy ? "busy" : "idle");
+}
+
+void clock_args(benchmark::internal::Benchmark* b) {
+  for (int busy : {0, 1})
+    for (int threads : {1, 2})
+      for (int n : {10, 100, 1000, 10000}) b->Args({n, threads, busy});
+}
+
+BENCHMARK(bm_clock)
+    ->Apply(clock_args)
+    ->ArgNames({"participants", "threads", "busy"})
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(3);
+
+}  // namespace
+
+BENCHMARK_MAIN();

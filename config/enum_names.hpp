@@ -1,0 +1,90 @@
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "config/scenario.hpp"
+
+namespace argus::config {
+
+/// One enumerator and how scenario files spell it.
+template <class Enum>
+struct enum_entry {
+  Enum value;
+  std::string_view name;
+};
+
+/// The YAML spelling of every enumerator of `Enum`, in declaration order; specialised below
+/// for each enum a scenario file can name.
+template <class Enum>
+struct enum_names;
+
+/// Names for the `type` of a camera.
+template <>
+struct enum_names<camera_type> {
+  static constexpr std::array<enum_entry<camera_type>, 2> entries{{
+      {camera_type::static_camera, "static"},
+      {camera_type::ptz, "ptz"},
+  }};
+};
+
+/// Names for the `kind` of imaging dropout.
+template <>
+struct enum_names<dropout_kind> {
+  static constexpr std::array<enum_entry<dropout_kind>, 3> entries{{
+      {dropout_kind::snow, "snow"},
+      {dropout_kind::bit_flip, "bit_flip"},
+      {dropout_kind::salt_and_pepper, "salt_and_pepper"},
+  }};
+};
+
+/// Names for the `solver` of the controller.
+template <>
+struct enum_names<conflict_solver> {
+  static constexpr std::array<enum_entry<conflict_solver>, 2> entries{{
+      {conflict_solver::best_solv, "best_solv"},
+      {conflict_solver::all_solv, "all_solv"},
+  }};
+};
+
+/// Names for the `kind` of a fault.
+template <>
+struct enum_names<fault_kind> {
+  static constexpr std::array<enum_entry<fault_kind>, 5> entries{{
+      {fault_kind::crash, "crash"},
+      {fault_kind::crash_and_recover, "crash_and_recover"},
+      {fault_kind::link_cut, "link_cut"},
+      {fault_kind::link_heal, "link_heal"},
+      {fault_kind::loss_burst, "loss_burst"},
+  }};
+};
+
+/// The YAML name of `value`, e.g. "ptz"; empty for a value outside the enumeration.
+template <class Enum>
+constexpr std::string_view yaml_name(Enum value) {
+  for (const auto& entry : enum_names<Enum>::entries) {
+    if (entry.value == value) return entry.name;
+  }
+  return {};
+}
+
+/// The enumerator a YAML name stands for; nullopt for an unknown name.
+template <class Enum>
+constexpr std::optional<Enum> from_yaml_name(std::string_view name) {
+  for (const auto& entry : enum_names<Enum>::entries) {
+    if (entry.name == name) return entry.value;
+  }
+  return std::nullopt;
+}
+
+/// All YAML names of `Enum`, in declaration order.
+template <class Enum>
+constexpr auto yaml_names() {
+  std::array<std::string_view, enum_names<Enum>::entries.size()> names{};
+  for (std::size_t i = 0; i < names.size(); ++i) names[i] = enum_names<Enum>::entries[i].name;
+  return names;
+}
+
+}  // namespace argus::config

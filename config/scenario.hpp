@@ -1,0 +1,196 @@
+#pragma once
+
+#include <array>
+#include <chrono>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace argus::config {
+
+/// Durations in scenarios are virtual time in (fractional) seconds; YAML writes them with a
+/// unit ("1500 ms", "2 min", "1/15 s").
+using seconds = std::chrono::duration<double>;
+
+/// How the simulation runs: seed, length, tick (one video frame) and pacing.
+struct run_settings {
+  std::uint64_t seed = 1;
+  seconds duration{60.0};
+  /// One tick is one video frame.
+  seconds tick{1.0 / 15.0};
+  /// 1 = paced to wall clock, N = N times faster, 0 = free-running.
+  double speed = 0.0;
+  /// CAF scheduler worker threads; 0 = one per hardware thread.
+  unsigned threads = 0;
+  /// Where outputs go; empty = "out/<scenario name>".
+  std::string output_dir;
+  friend bool operator==(const run_settings&, const run_settings&) = default;
+};
+
+/// The station and its pedestrians.
+struct world_settings {
+  /// Station layout file, relative to the scenario file; empty = built-in Penn Station.
+  std::string layout;
+  /// Number of pedestrians the spawner keeps in the station.
+  unsigned population = 100;
+  /// New pedestrians entering per minute at the portals while below the target population.
+  double spawn_rate_per_min = 60.0;
+  /// Crowd partitions (actors) the station is split into.
+  unsigned partitions = 1;
+  friend bool operator==(const world_settings&, const world_settings&) = default;
+};
+
+/// A point on the station floor plan, in metres.
+struct plan_point {
+  double x_m = 0.0;
+  double y_m = 0.0;
+  friend bool operator==(const plan_point&, const plan_point&) = default;
+};
+
+/// Lower and upper bound of a camera degree of freedom, in degrees.
+struct degree_range {
+  double min_deg = 0.0;
+  double max_deg = 0.0;
+  friend bool operator==(const degree_range&, const degree_range&) = default;
+};
+
+/// Per-camera colour response in HSV (Section III-A): gains and offsets, plus tints (white),
+/// tones (grey) and shades (black) mixed in, each a fraction in [0, 1].
+struct color_response {
+  double hue_offset_deg = 0.0;
+  double saturation_gain = 1.0;
+  double value_gain = 1.0;
+  double value_offset = 0.0;
+  double tint = 0.0;
+  double tone = 0.0;
+  double shade = 0.0;
+  friend bool operator==(const color_response&, const color_response&) = default;
+};
+
+/// How data-dropout noise corrupts pixels.
+enum class dropout_kind { snow, bit_flip, salt_and_pepper };
+
+/// The imaging model of one camera (Section III-A); each effect can be off.
+struct imaging_model {
+  unsigned width_px = 640;
+  unsigned height_px = 480;
+  bool color_response_enabled = false;
+  color_response response;
+  /// Zero-mean Gaussian detector noise, in 8-bit intensity units; 0 = off.
+  double noise_sigma = 0.0;
+  /// Fraction of corrupted pixels in [0, 1]; 0 = off.
+  double dropout_fraction = 0.0;
+  dropout_kind dropout = dropout_kind::snow;
+  /// JPEG round-trip quality in [1, 100]; 0 = off.
+  unsigned jpeg_quality = 0;
+  bool interlace = false;
+  friend bool operator==(const imaging_model&, const imaging_model&) = default;
+};
+
+/// Static cameras are PTZ cameras that never move.
+enum class camera_type { static_camera, ptz };
+
+/// One camera node: where it stands (known to the simulator only, never to the node), its
+/// default pose, limits and slew rates.
+struct camera_settings {
+  int id = 0;
+  plan_point position;
+  double height_m = 4.0;
+  camera_type type = camera_type::ptz;
+  double pan_deg = 0.0;
+  double tilt_deg = -20.0;
+  double field_of_view_deg = 45.0;
+  degree_range pan_limits{-180.0, 180.0};
+  degree_range tilt_limits{-80.0, 10.0};
+  degree_range field_of_view_limits{5.0, 90.0};
+  double pan_rate_deg_per_s = 60.0;
+  double tilt_rate_deg_per_s = 30.0;
+  double zoom_rate_deg_per_s = 20.0;
+  imaging_model imaging;
+  friend bool operator==(const camera_settings&, const camera_settings&) = default;
+};
+
+/// The network model (Table 2, "Network communication parameters").
+struct network_settings {
+  double loss_probability = 0.1;
+  seconds min_delay{0.200};
+  seconds max_delay{0.500};
+  /// Probability that a node fails, per second of virtual time (see docs/network.md).
+  double node_failure_probability = 0.001;
+  unsigned max_hops = 3;
+  seconds message_timeout{1.500};
+  /// Nodes within this distance are neighbours, unless `adjacency` lists the links.
+  double communication_range_m = 40.0;
+  /// Explicit neighbour pairs (camera ids); empty = by communication range.
+  std::vector<std::array<int, 2>> adjacency;
+  double duplicate_probability = 0.0;
+  bool reorder = false;
+  friend bool operator==(const network_settings&, const network_settings&) = default;
+};
+
+/// Which CSP solver settles group-group conflicts (Section IV-B, Table 1).
+enum class conflict_solver { best_solv, all_solv };
+
+/// The camera controller and protocol (Table 2, controller and at-node parameters; eq. 1).
+struct controller_settings {
+  seconds wait_timeout{120.0};
+  seconds search_timeout{300.0};
+  double min_relevance = 0.1;
+  seconds heartbeat_interval{1.0};
+  seconds leader_failure_timeout{3.0};
+  seconds member_failure_timeout{5.0};
+  double auction_relevance_threshold = 0.5;
+  seconds min_task_duration{60.0};
+  double membership_relevance_threshold = 0.1;
+  seconds merge_timeout{300.0};
+  seconds bidding_timeout{120.0};
+  /// eq. (1) spreads for field of view, pan and tilt, in degrees.
+  double relevance_sigma_fov_deg = 5.0;
+  double relevance_sigma_pan_deg = 5.0;
+  double relevance_sigma_tilt_deg = 5.0;
+  conflict_solver solver = conflict_solver::best_solv;
+  friend bool operator==(const controller_settings&, const controller_settings&) = default;
+};
+
+/// An operator request: at time `at`, observe pedestrian `pedestrian` starting from camera
+/// `camera`, with at least `cameras_wanted` cameras.
+struct operator_task {
+  seconds at{0.0};
+  int pedestrian = 0;
+  int camera = 0;
+  unsigned cameras_wanted = 1;
+  friend bool operator==(const operator_task&, const operator_task&) = default;
+};
+
+/// What a scheduled fault does.
+enum class fault_kind { crash, crash_and_recover, link_cut, link_heal, loss_burst };
+
+/// One scheduled fault. `peer` is the other end of a link fault; `length` is the recovery
+/// delay (crash_and_recover) or the burst length (loss_burst).
+struct fault {
+  seconds at{0.0};
+  fault_kind kind = fault_kind::crash;
+  int camera = 0;
+  std::optional<int> peer;
+  seconds length{0.0};
+  double loss_probability = 1.0;
+  friend bool operator==(const fault&, const fault&) = default;
+};
+
+/// A whole scenario file, validated, with every default filled in.
+struct scenario {
+  std::string name;
+  /// The file it was read from (empty when built in code).
+  std::string source_path;
+  run_settings run;
+  world_settings world;
+  std::vector<camera_settings> cameras;
+  network_settings network;
+  controller_settings controller;
+  std::vector<operator_task> tasks;
+  std::vector<fault> faults;
+  friend bool operator==(const scenario&, const scenario&) = default;
+};
+
+}  // namespace argus::config

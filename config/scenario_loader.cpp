@@ -1,0 +1,478 @@
+#include "config/scenario_loader.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+#include <yaml-cpp/yaml.h>
+
+#include <array>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <map>
+#include <memory>
+
+#include "config/mapping_reader.hpp"
+#include "config/yaml_reader.hpp"
+
+namespace argus::config {
+
+namespace {
+
+// The keys each mapping allows, in schema order (the order "expected one of" lists them).
+constexpr std::array<std::string_view, 8> scenario_keys{"name",    "run",        "world", "cameras",
+                                                        "network", "controller", "tasks", "faults"};
+constexpr std::array<std::string_view, 6> run_keys{"seed",  "duration", "tick",
+                                                   "speed", "threads",  "output_dir"};
+constexpr std::array<std::string_view, 4> world_keys{"layout", "population", "spawn_rate_per_min",
+                                                     "partitions"};
+constexpr std::array<std::string_view, 14> camera_keys{"id",
+                                                       "position",
+                                                       "height_m",
+                                                       "type",
+                                                       "pan_deg",
+                                                       "tilt_deg",
+                                                       "field_of_view_deg",
+                                                       "pan_limits",
+                                                       "tilt_limits",
+                                                       "field_of_view_limits",
+                                                       "pan_rate_deg_per_s",
+                                                       "tilt_rate_deg_per_s",
+                                                       "zoom_rate_deg_per_s",
+                                                       "imaging"};
+constexpr std::array<std::string_view, 2> position_keys{"x_m", "y_m"};
+constexpr std::array<std::string_view, 6> imaging_keys{
+    "resolution", "color_response", "noise_sigma", "dropout", "jpeg_quality", "interlace"};
+constexpr std::array<std::string_view, 8> color_response_keys{
+    "enabled", "hue_offset_deg", "saturation_gain", "value_gain", "value_offset", "tint",
+    "tone",    "shade"};
+constexpr std::array<std::string_view, 2> dropout_keys{"fraction", "kind"};
+constexpr std::array<std::string_view, 10> network_keys{"loss_probability",
+                                                        "min_delay",
+                                                        "max_delay",
+                                                        "node_failure_probability",
+                                                        "max_hops",
+                                                        "message_timeout",
+                                                        "communication_range_m",
+                                                        "adjacency",
+                                                        "duplicate_probability",
+                                                        "reorder"};
+constexpr std::array<std::string_view, 15> controller_keys{"wait_timeout",
+                                                           "search_timeout",
+                                                           "min_relevance",
+                                                           "heartbeat_interval",
+                                                           "leader_failure_timeout",
+                                                           "member_failure_timeout",
+                                                           "auction_relevance_threshold",
+                                                           "min_task_duration",
+                                                           "membership_relevance_threshold",
+                                                           "merge_timeout",
+                                                           "bidding_timeout",
+                                                           "relevance_sigma_fov_deg",
+                                                           "relevance_sigma_pan_deg",
+                                                           "relevance_sigma_tilt_deg",
+                                                           "solver"};
+constexpr std::array<std::string_view, 4> task_keys{"at", "pedestrian", "camera", "cameras_wanted"};
+constexpr std::array<std::string_view, 6> fault_keys{"at",   "kind",   "camera",
+                                                     "peer", "length", "loss_probability"};
+
+const auto probability = value_bounds::closed(0.0, 1.0);
+const auto non_negative = value_bounds::at_least(0.0);
+const auto positive = value_bounds::above(0.0);
+
+std::string item(const std::string& path, std::size_t index) {
+  return fmt::format("{}[{}]", path, index);
+}
+
+/// Reads a whole document into a scenario; the one place that knows the schema.
+class scenario_parser {
+ public:
+  explicit scenario_parser(yaml_reader& reader) : reader_(reader) {
+    // nop
+  }
+
+  void parse(const YAML::Node& root, scenario& out) {
+    mapping_reader document(reader_, root, "", scenario_keys);
+    if (document.read("name", out.name) && out.name.empty()) {
+      reader_.report(*document.find("name"), "name", "expected a non-empty name");
+    }
+    // Cameras first: the network, tasks and faults refer to their ids.
+    if (const auto node = document.find("cameras")) read_cameras(*node, out.cameras);
+    if (const auto node = document.find("run")) read_run(*node, out.run);
+    if (const auto node = document.find("world")) read_world(*node, out.world);
+    if (const auto node = document.find("network")) read_network(*node, out.network);
+    if (const auto node = document.find("controller")) read_controller(*node, out.controller);
+    if (const auto node = document.find("tasks")) read_tasks(*node, out.tasks);
+    if (const auto node = document.find("faults")) read_faults(*node, out.faults);
+  }
+
+ private:
+  void read_run(const YAML::Node& node, run_settings& out) {
+    mapping_reader run(reader_, node, "run", run_keys);
+    run.read("seed", out.seed);
+    run.read("duration", out.duration, positive);
+    // A tick is one video frame; longer than a second would starve the controller.
+    run.read("tick", out.tick, value_bounds::left_open(0.0, 1.0));
+    run.read("speed", out.speed, non_negative);
+    run.read("threads", out.threads, value_bounds::closed(0, 256));
+    run.read("output_dir", out.output_dir);
+  }
+
+  void read_world(const YAML::Node& node, world_settings& out) {
+    mapping_reader world(reader_, node, "world", world_keys);
+    world.read("layout", out.layout);
+    world.read("population", out.population, value_bounds::closed(0, 1'000'000));
+    world.read("spawn_rate_per_min", out.spawn_rate_per_min, non_negative);
+    world.read("partitions", out.partitions, value_bounds::at_least(1));
+  }
+
+  void read_cameras(const YAML::Node& node, std::vector<camera_settings>& out) {
+    if (!reader_.expect_list(node, "cameras")) return;
+    for (std::size_t index = 0; index < node.size(); ++index) {
+      camera_settings camera;
+      read_camera(node[index], item("cameras", index), camera);
+      out.push_back(std::move(camera));
+    }
+  }
+
+  void read_camera(const YAML::Node& node, const std::string& path, camera_settings& out) {
+    mapping_reader camera(reader_, node, path, camera_keys);
+    if (camera.require("id") && camera.read("id", out.id, value_bounds::at_least(1))) {
+      const auto id_node = *camera.find("id");
+      const auto [earlier, inserted] = camera_ids_.emplace(out.id, id_node.Mark());
+      if (!inserted) {
+        reader_.report(id_node, camera.field("id"),
+                       fmt::format("duplicate camera id {} (first used at line {})", out.id,
+                                   earlier->second.line + 1));
+      }
+    }
+    if (camera.require("position")) {
+      read_position(*camera.find("position"), camera.field("position"), out.position);
+    }
+    camera.read("height_m", out.height_m, positive);
+    camera.read("type", out.type);
+    read_pose(camera, "pan", out.pan_deg, out.pan_limits, value_bounds::any());
+    read_pose(camera, "tilt", out.tilt_deg, out.tilt_limits, value_bounds::closed(-90.0, 90.0));
+    read_pose(camera, "field_of_view", out.field_of_view_deg, out.field_of_view_limits,
+              value_bounds::open(0.0, 180.0));
+    camera.read("pan_rate_deg_per_s", out.pan_rate_deg_per_s, non_negative);
+    camera.read("tilt_rate_deg_per_s", out.tilt_rate_deg_per_s, non_negative);
+    camera.read("zoom_rate_deg_per_s", out.zoom_rate_deg_per_s, non_negative);
+    if (const auto imaging = camera.find("imaging")) {
+      read_imaging(*imaging, camera.field("imaging"), out.imaging);
+    }
+  }
+
+  void read_position(const YAML::Node& node, const std::string& path, plan_point& out) {
+    if (node.IsSequence()) {
+      if (node.size() != 2) {
+        reader_.report(
+            node, path,
+            fmt::format("expected a list [x_m, y_m] of 2 numbers, got a list of {}", node.size()));
+        return;
+      }
+      reader_.read(node[0], item(path, 0), out.x_m);
+      reader_.read(node[1], item(path, 1), out.y_m);
+      return;
+    }
+    if (!node.IsMap()) {
+      reader_.report(node, path,
+                     "expected a mapping {x_m: ..., y_m: ...} or a list [x_m, y_m], got " +
+                         yaml_reader::describe(node));
+      return;
+    }
+    mapping_reader position(reader_, node, path, position_keys);
+    if (position.require("x_m")) position.read("x_m", out.x_m);
+    if (position.require("y_m")) position.read("y_m", out.y_m);
+  }
+
+  /// Reads `NAME_limits` (each end within `allowed`, min <= max) and then `NAME_deg`, which
+  /// must lie within those limits, whether given or left at its default.
+  void read_pose(mapping_reader& camera, const std::string& name, double& value_deg,
+                 degree_range& limits, const value_bounds& allowed) {
+    const auto limits_key = name + "_limits";
+    const auto value_key = name + "_deg";
+    bool limits_valid = true;
+    if (const auto node = camera.find(limits_key)) {
+      limits_valid = read_range(*node, camera.field(limits_key), limits, allowed);
+    }
+    if (!limits_valid) {
+      camera.read(value_key, value_deg, allowed);
+      return;
+    }
+    const auto within = value_bounds::closed(limits.min_deg, limits.max_deg);
+    const auto note = "within " + limits_key;
+    camera.read(value_key, value_deg, within, note);
+    camera.check_default(value_key, value_deg, within, note);
+  }
+
+  /// A [min, max] list; returns whether it is valid.
+  bool read_range(const YAML::Node& node, const std::string& path, degree_range& out,
+                  const value_bounds& allowed) {
+    if (!node.IsSequence() || node.size() != 2) {
+      const auto got = node.IsSequence() ? fmt::format("a list of {}", node.size())
+                                         : yaml_reader::describe(node);
+      reader_.report(node, path, "expected a list [min, max] of 2 numbers, got " + got);
+      return false;
+    }
+    degree_range range;
+    const bool min_valid = reader_.read(node[0], item(path, 0), range.min_deg, allowed);
+    const bool max_valid = reader_.read(node[1], item(path, 1), range.max_deg, allowed);
+    if (!min_valid || !max_valid) return false;
+    if (range.min_deg > range.max_deg) {
+      reader_.report(node, path,
+                     fmt::format("expected [min, max] with min <= max, got [{}, {}]",
+                                 node[0].Scalar(), node[1].Scalar()));
+      return false;
+    }
+    out = range;
+    return true;
+  }
+
+  void read_imaging(const YAML::Node& node, const std::string& path, imaging_model& out) {
+    mapping_reader imaging(reader_, node, path, imaging_keys);
+    if (const auto resolution = imaging.find("resolution")) {
+      read_resolution(*resolution, imaging.field("resolution"), out);
+    }
+    if (const auto response = imaging.find("color_response")) {
+      read_color_response(*response, imaging.field("color_response"), out);
+    }
+    imaging.read("noise_sigma", out.noise_sigma, non_negative);
+    if (const auto dropout = imaging.find("dropout")) {
+      mapping_reader reader(reader_, *dropout, imaging.field("dropout"), dropout_keys);
+      reader.read("fraction", out.dropout_fraction, probability);
+      reader.read("kind", out.dropout);
+    }
+    imaging.read("jpeg_quality", out.jpeg_quality, value_bounds::closed(0, 100));
+    imaging.read("interlace", out.interlace);
+  }
+
+  void read_resolution(const YAML::Node& node, const std::string& path, imaging_model& out) {
+    if (!node.IsSequence() || node.size() != 2) {
+      const auto got = node.IsSequence() ? fmt::format("a list of {}", node.size())
+                                         : yaml_reader::describe(node);
+      reader_.report(node, path, "expected a list [width, height] of 2 integers, got " + got);
+      return;
+    }
+    const auto pixels = value_bounds::closed(16, 8192);
+    reader_.read(node[0], item(path, 0), out.width_px, pixels);
+    reader_.read(node[1], item(path, 1), out.height_px, pixels);
+  }
+
+  void read_color_response(const YAML::Node& node, const std::string& path, imaging_model& out) {
+    // `color_response: off` (or on) switches the model without listing its parameters.
+    if (node.IsScalar()) {
+      reader_.read(node, path, out.color_response_enabled);
+      return;
+    }
+    mapping_reader response(reader_, node, path, color_response_keys);
+    if (!response.is_mapping()) return;
+    out.color_response_enabled = true;
+    response.read("enabled", out.color_response_enabled);
+    auto& values = out.response;
+    response.read("hue_offset_deg", values.hue_offset_deg);
+    response.read("saturation_gain", values.saturation_gain, non_negative);
+    response.read("value_gain", values.value_gain, non_negative);
+    response.read("value_offset", values.value_offset);
+    response.read("tint", values.tint, probability);
+    response.read("tone", values.tone, probability);
+    response.read("shade", values.shade, probability);
+  }
+
+  void read_network(const YAML::Node& node, network_settings& out) {
+    mapping_reader network(reader_, node, "network", network_keys);
+    network.read("loss_probability", out.loss_probability, probability);
+    const bool min_valid =
+        !network.find("min_delay") || network.read("min_delay", out.min_delay, non_negative);
+    if (min_valid) {
+      const auto after_min = value_bounds::at_least(out.min_delay.count());
+      network.read("max_delay", out.max_delay, after_min, "at least min_delay");
+      network.check_default("max_delay", out.max_delay, after_min, "at least min_delay");
+    } else {
+      network.read("max_delay", out.max_delay, non_negative);
+    }
+    network.read("node_failure_probability", out.node_failure_probability, probability);
+    network.read("max_hops", out.max_hops, value_bounds::at_least(1));
+    network.read("message_timeout", out.message_timeout, positive);
+    network.read("communication_range_m", out.communication_range_m, non_negative);
+    if (const auto adjacency = network.find("adjacency")) {
+      read_adjacency(*adjacency, network.field("adjacency"), out.adjacency);
+    }
+    network.read("duplicate_probability", out.duplicate_probability, probability);
+    network.read("reorder", out.reorder);
+  }
+
+  void read_adjacency(const YAML::Node& node, const std::string& path,
+                      std::vector<std::array<int, 2>>& out) {
+    if (!reader_.expect_list(node, path)) return;
+    for (std::size_t index = 0; index < node.size(); ++index) {
+      const auto pair = node[index];
+      const auto pair_path = item(path, index);
+      if (!pair.IsSequence() || pair.size() != 2) {
+        const auto got = pair.IsSequence() ? fmt::format("a list of {}", pair.size())
+                                           : yaml_reader::describe(pair);
+        reader_.report(pair, pair_path, "expected a pair [camera, camera], got " + got);
+        continue;
+      }
+      std::array<int, 2> link{};
+      const bool first_valid = read_camera_reference(pair[0], item(pair_path, 0), link[0]);
+      if (read_camera_reference(pair[1], item(pair_path, 1), link[1]) && first_valid &&
+          link[0] == link[1]) {
+        reader_.report(pair[1], item(pair_path, 1),
+                       fmt::format("camera {} cannot be its own neighbour", link[1]));
+      }
+      out.push_back(link);
+    }
+  }
+
+  void read_controller(const YAML::Node& node, controller_settings& out) {
+    mapping_reader controller(reader_, node, "controller", controller_keys);
+    controller.read("wait_timeout", out.wait_timeout, positive);
+    controller.read("search_timeout", out.search_timeout, positive);
+    controller.read("min_relevance", out.min_relevance, probability);
+    controller.read("heartbeat_interval", out.heartbeat_interval, positive);
+    controller.read("leader_failure_timeout", out.leader_failure_timeout, positive);
+    controller.read("member_failure_timeout", out.member_failure_timeout, positive);
+    controller.read("auction_relevance_threshold", out.auction_relevance_threshold, probability);
+    controller.read("min_task_duration", out.min_task_duration, non_negative);
+    controller.read("membership_relevance_threshold", out.membership_relevance_threshold,
+                    probability);
+    controller.read("merge_timeout", out.merge_timeout, positive);
+    controller.read("bidding_timeout", out.bidding_timeout, positive);
+    controller.read("relevance_sigma_fov_deg", out.relevance_sigma_fov_deg, positive);
+    controller.read("relevance_sigma_pan_deg", out.relevance_sigma_pan_deg, positive);
+    controller.read("relevance_sigma_tilt_deg", out.relevance_sigma_tilt_deg, positive);
+    controller.read("solver", out.solver);
+  }
+
+  void read_tasks(const YAML::Node& node, std::vector<operator_task>& out) {
+    if (!reader_.expect_list(node, "tasks")) return;
+    for (std::size_t index = 0; index < node.size(); ++index) {
+      mapping_reader task(reader_, node[index], item("tasks", index), task_keys);
+      operator_task read;
+      if (task.require("at")) task.read("at", read.at, non_negative);
+      if (task.require("pedestrian")) {
+        task.read("pedestrian", read.pedestrian, value_bounds::at_least(0));
+      }
+      if (task.require("camera")) {
+        read_camera_reference(*task.find("camera"), task.field("camera"), read.camera);
+      }
+      task.read("cameras_wanted", read.cameras_wanted, value_bounds::at_least(1));
+      out.push_back(read);
+    }
+  }
+
+  void read_faults(const YAML::Node& node, std::vector<fault>& out) {
+    if (!reader_.expect_list(node, "faults")) return;
+    for (std::size_t index = 0; index < node.size(); ++index) {
+      mapping_reader entry(reader_, node[index], item("faults", index), fault_keys);
+      fault read;
+      if (entry.require("at")) entry.read("at", read.at, non_negative);
+      const bool kind_valid = entry.require("kind") && entry.read("kind", read.kind);
+      const bool camera_valid =
+          entry.require("camera") &&
+          read_camera_reference(*entry.find("camera"), entry.field("camera"), read.camera);
+      const auto kind_name = std::string{yaml_name(read.kind)};
+      const bool is_link = read.kind == fault_kind::link_cut || read.kind == fault_kind::link_heal;
+      const bool has_length =
+          read.kind == fault_kind::crash_and_recover || read.kind == fault_kind::loss_burst;
+      if (const auto peer = entry.find("peer")) {
+        int id = 0;
+        if (read_camera_reference(*peer, entry.field("peer"), id)) {
+          read.peer = id;
+          if (camera_valid && id == read.camera) {
+            reader_.report(*peer, entry.field("peer"),
+                           fmt::format("camera {} cannot have a link to itself", id));
+          }
+        }
+      } else if (kind_valid && is_link) {
+        entry.require("peer", "needed by " + kind_name);
+      }
+      if (kind_valid && has_length) {
+        if (entry.require("length", "needed by " + kind_name)) {
+          entry.read("length", read.length, positive);
+        }
+      } else {
+        entry.read("length", read.length, non_negative);
+      }
+      entry.read("loss_probability", read.loss_probability, probability);
+      out.push_back(read);
+    }
+  }
+
+  /// An integer naming one of the cameras; returns whether it does.
+  bool read_camera_reference(const YAML::Node& node, const std::string& path, int& out) {
+    int id = 0;
+    if (!reader_.read(node, path, id)) return false;
+    if (!camera_ids_.contains(id)) {
+      std::vector<int> known;
+      for (const auto& [each, mark] : camera_ids_) known.push_back(each);
+      reader_.report(
+          node, path,
+          fmt::format("no camera has id {} (camera ids: {})", id,
+                      known.empty() ? "none" : fmt::format("{}", fmt::join(known, ", "))));
+      return false;
+    }
+    out = id;
+    return true;
+  }
+
+  yaml_reader& reader_;
+  /// Camera id -> where it was defined, for duplicate and reference checks.
+  std::map<int, YAML::Mark> camera_ids_;
+};
+
+problem whole_file_problem(const std::string& file, std::string message) {
+  return problem{file, 0, 0, {}, std::move(message)};
+}
+
+}  // namespace
+
+scenario parse_scenario(std::string_view yaml_text, const std::string& source_name) {
+  std::vector<YAML::Node> documents;
+  try {
+    documents = YAML::LoadAll(std::string{yaml_text});
+  } catch (const YAML::Exception& error) {
+    // yaml-cpp marks are 0-based; -1 (unknown) becomes 0.
+    throw scenario_error(
+        {problem{source_name, error.mark.line + 1, error.mark.column + 1, {}, error.msg}});
+  }
+  if (documents.size() > 1) {
+    throw scenario_error(
+        {problem{source_name,
+                 documents[1].Mark().line + 1,
+                 1,
+                 {},
+                 fmt::format("expected one YAML document, got {}", documents.size())}});
+  }
+  scenario out;
+  out.name = std::filesystem::path{source_name}.stem().string();
+  out.source_path = source_name;
+  yaml_reader reader(source_name);
+  scenario_parser(reader).parse(documents.empty() ? YAML::Node{} : documents.front(), out);
+  if (!reader.problems().empty()) throw scenario_error(reader.take_problems());
+  return out;
+}
+
+scenario load_scenario(const std::filesystem::path& file) {
+  const auto name = file.string();
+  const std::unique_ptr<std::FILE, int (*)(std::FILE*)> stream{std::fopen(name.c_str(), "rb"),
+                                                               &std::fclose};
+  if (!stream) {
+    throw scenario_error(
+        {whole_file_problem(name, fmt::format("cannot open file: {}", std::strerror(errno)))});
+  }
+  std::string text;
+  std::array<char, 65536> buffer{};
+  std::size_t count = 0;
+  while ((count = std::fread(buffer.data(), 1, buffer.size(), stream.get())) > 0) {
+    text.append(buffer.data(), count);
+  }
+  // A directory opens fine on Linux; reading it fails with EISDIR.
+  if (std::ferror(stream.get())) {
+    throw scenario_error(
+        {whole_file_problem(name, fmt::format("cannot open file: {}", std::strerror(errno)))});
+  }
+  return parse_scenario(text, name);
+}
+
+}  // namespace argus::config

@@ -1,0 +1,217 @@
+#include "config/scenario_writer.hpp"
+
+#include <fmt/format.h>
+
+#include <iterator>
+
+#include "config/duration.hpp"
+#include "config/enum_names.hpp"
+
+namespace argus::config {
+
+namespace {
+
+/// A double-quoted YAML string: names and paths may hold characters (':', '#', leading
+/// '*', "null", ...) that a plain scalar would misread.
+std::string quoted(const std::string& text) {
+  std::string out = "\"";
+  for (const unsigned char c : text) {
+    switch (c) {
+      case '"':
+        out += "\\\"";
+        break;
+      case '\\':
+        out += "\\\\";
+        break;
+      case '\n':
+        out += "\\n";
+        break;
+      case '\t':
+        out += "\\t";
+        break;
+      default:
+        if (c < 0x20 || c == 0x7f) {
+          out += fmt::format("\\x{:02x}", c);
+        } else {
+          out += static_cast<char>(c);
+        }
+    }
+  }
+  out += '"';
+  return out;
+}
+
+/// fmt's default is the shortest decimal that reads back to the same double.
+std::string number(double value) {
+  return fmt::format("{}", value);
+}
+
+std::string duration(seconds value) {
+  return format_duration(value);
+}
+
+std::string boolean(bool value) {
+  return value ? "true" : "false";
+}
+
+std::string range(const degree_range& limits) {
+  return fmt::format("[{}, {}]", number(limits.min_deg), number(limits.max_deg));
+}
+
+/// Builds the text line by line with an indentation level.
+class yaml_text {
+ public:
+  void line(int indent, std::string_view text) {
+    out_.append(static_cast<std::size_t>(indent) * 2, ' ');
+    out_ += text;
+    out_ += '\n';
+  }
+
+  void entry(int indent, std::string_view key, std::string_view value) {
+    line(indent, fmt::format("{}: {}", key, value));
+  }
+
+  std::string take() { return std::move(out_); }
+
+ private:
+  std::string out_;
+};
+
+void write_color_response(yaml_text& out, const imaging_model& imaging) {
+  const auto& values = imaging.response;
+  // `off` is the readable form; the mapping with `enabled: false` keeps parameters that
+  // were set but switched off, so the round trip stays exact.
+  if (!imaging.color_response_enabled && values == color_response{}) {
+    out.entry(3, "color_response", "off");
+    return;
+  }
+  out.line(3, "color_response:");
+  out.entry(4, "enabled", boolean(imaging.color_response_enabled));
+  out.entry(4, "hue_offset_deg", number(values.hue_offset_deg));
+  out.entry(4, "saturation_gain", number(values.saturation_gain));
+  out.entry(4, "value_gain", number(values.value_gain));
+  out.entry(4, "value_offset", number(values.value_offset));
+  out.entry(4, "tint", number(values.tint));
+  out.entry(4, "tone", number(values.tone));
+  out.entry(4, "shade", number(values.shade));
+}
+
+void write_camera(yaml_text& out, const camera_settings& camera) {
+  out.line(1, fmt::format("- id: {}", camera.id));
+  out.entry(2, "position",
+            fmt::format("{{x_m: {}, y_m: {}}}", number(camera.position.x_m),
+                        number(camera.position.y_m)));
+  out.entry(2, "height_m", number(camera.height_m));
+  out.entry(2, "type", yaml_name(camera.type));
+  out.entry(2, "pan_deg", number(camera.pan_deg));
+  out.entry(2, "tilt_deg", number(camera.tilt_deg));
+  out.entry(2, "field_of_view_deg", number(camera.field_of_view_deg));
+  out.entry(2, "pan_limits", range(camera.pan_limits));
+  out.entry(2, "tilt_limits", range(camera.tilt_limits));
+  out.entry(2, "field_of_view_limits", range(camera.field_of_view_limits));
+  out.entry(2, "pan_rate_deg_per_s", number(camera.pan_rate_deg_per_s));
+  out.entry(2, "tilt_rate_deg_per_s", number(camera.tilt_rate_deg_per_s));
+  out.entry(2, "zoom_rate_deg_per_s", number(camera.zoom_rate_deg_per_s));
+  const auto& imaging = camera.imaging;
+  out.line(2, "imaging:");
+  out.entry(3, "resolution", fmt::format("[{}, {}]", imaging.width_px, imaging.height_px));
+  write_color_response(out, imaging);
+  out.entry(3, "noise_sigma", number(imaging.noise_sigma));
+  out.entry(3, "dropout",
+            fmt::format("{{fraction: {}, kind: {}}}", number(imaging.dropout_fraction),
+                        yaml_name(imaging.dropout)));
+  out.entry(3, "jpeg_quality", fmt::format("{}", imaging.jpeg_quality));
+  out.entry(3, "interlace", boolean(imaging.interlace));
+}
+
+std::string adjacency(const std::vector<std::array<int, 2>>& links) {
+  std::string text = "[";
+  for (const auto& link : links) {
+    if (text.size() > 1) text += ", ";
+    text += fmt::format("[{}, {}]", link[0], link[1]);
+  }
+  return text + "]";
+}
+
+std::string task(const operator_task& each) {
+  return fmt::format("- {{at: {}, pedestrian: {}, camera: {}, cameras_wanted: {}}}",
+                     duration(each.at), each.pedestrian, each.camera, each.cameras_wanted);
+}
+
+std::string fault_line(const fault& each) {
+  auto text = fmt::format("- {{at: {}, kind: {}, camera: {}", duration(each.at),
+                          yaml_name(each.kind), each.camera);
+  if (each.peer) text += fmt::format(", peer: {}", *each.peer);
+  text += fmt::format(", length: {}, loss_probability: {}}}", duration(each.length),
+                      number(each.loss_probability));
+  return text;
+}
+
+}  // namespace
+
+std::string to_yaml(const scenario& s) {
+  yaml_text out;
+  out.line(0, "# Effective configuration: every field, defaults included.");
+  out.entry(0, "name", quoted(s.name));
+
+  out.line(0, "run:");
+  out.entry(1, "seed", fmt::format("{}", s.run.seed));
+  out.entry(1, "duration", duration(s.run.duration));
+  out.entry(1, "tick", duration(s.run.tick));
+  out.entry(1, "speed", number(s.run.speed));
+  out.entry(1, "threads", fmt::format("{}", s.run.threads));
+  out.entry(1, "output_dir", quoted(s.run.output_dir));
+
+  out.line(0, "world:");
+  out.entry(1, "layout", quoted(s.world.layout));
+  out.entry(1, "population", fmt::format("{}", s.world.population));
+  out.entry(1, "spawn_rate_per_min", number(s.world.spawn_rate_per_min));
+  out.entry(1, "partitions", fmt::format("{}", s.world.partitions));
+
+  if (s.cameras.empty()) {
+    out.line(0, "cameras: []");
+  } else {
+    out.line(0, "cameras:");
+    for (const auto& camera : s.cameras) write_camera(out, camera);
+  }
+
+  const auto& network = s.network;
+  out.line(0, "network:");
+  out.entry(1, "loss_probability", number(network.loss_probability));
+  out.entry(1, "min_delay", duration(network.min_delay));
+  out.entry(1, "max_delay", duration(network.max_delay));
+  out.entry(1, "node_failure_probability", number(network.node_failure_probability));
+  out.entry(1, "max_hops", fmt::format("{}", network.max_hops));
+  out.entry(1, "message_timeout", duration(network.message_timeout));
+  out.entry(1, "communication_range_m", number(network.communication_range_m));
+  out.entry(1, "adjacency", adjacency(network.adjacency));
+  out.entry(1, "duplicate_probability", number(network.duplicate_probability));
+  out.entry(1, "reorder", boolean(network.reorder));
+
+  const auto& controller = s.controller;
+  out.line(0, "controller:");
+  out.entry(1, "wait_timeout", duration(controller.wait_timeout));
+  out.entry(1, "search_timeout", duration(controller.search_timeout));
+  out.entry(1, "min_relevance", number(controller.min_relevance));
+  out.entry(1, "heartbeat_interval", duration(controller.heartbeat_interval));
+  out.entry(1, "leader_failure_timeout", duration(controller.leader_failure_timeout));
+  out.entry(1, "member_failure_timeout", duration(controller.member_failure_timeout));
+  out.entry(1, "auction_relevance_threshold", number(controller.auction_relevance_threshold));
+  out.entry(1, "min_task_duration", duration(controller.min_task_duration));
+  out.entry(1, "membership_relevance_threshold", number(controller.membership_relevance_threshold));
+  out.entry(1, "merge_timeout", duration(controller.merge_timeout));
+  out.entry(1, "bidding_timeout", duration(controller.bidding_timeout));
+  out.entry(1, "relevance_sigma_fov_deg", number(controller.relevance_sigma_fov_deg));
+  out.entry(1, "relevance_sigma_pan_deg", number(controller.relevance_sigma_pan_deg));
+  out.entry(1, "relevance_sigma_tilt_deg", number(controller.relevance_sigma_tilt_deg));
+  out.entry(1, "solver", yaml_name(controller.solver));
+
+  out.line(0, s.tasks.empty() ? "tasks: []" : "tasks:");
+  for (const auto& each : s.tasks) out.line(1, task(each));
+
+  out.line(0, s.faults.empty() ? "faults: []" : "faults:");
+  for (const auto& each : s.faults) out.line(1, fault_line(each));
+  return out.take();
+}
+
+}  // namespace argus::config

@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# Sourced by demo.sh and test.sh: installs whatever Debian 12 packages are missing, and
+# provides `argus_build DIR [cmake options...]` (configure once, then incremental builds).
+set -euo pipefail
+
+ARGUS_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+
+argus_packages=(
+  build-essential cmake ninja-build ccache pkg-config git
+  libcaf-dev libeigen3-dev libopencv-dev
+  libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri
+  libyaml-cpp-dev libcli11-dev libspdlog-dev libfmt-dev nlohmann-json3-dev
+  libgtest-dev libgmock-dev libbenchmark-dev clang-format
+)
+
+argus_install_missing() {
+  local missing=()
+  for p in "${argus_packages[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  done
+  [ ${#missing[@]} -eq 0 ] && return 0
+  echo "argus: installing missing packages: ${missing[*]}" >&2
+  local sudo=""
+  [ "$(id -u)" -ne 0 ] && sudo="sudo"
+  $sudo apt-get update -q
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends "${missing[@]}"
+}
+
+# argus_build DIR [cmake options...]: configures DIR on first use, then builds incrementally.
+argus_build() {
+  local dir="$1"
+  shift
+  if [ ! -f "$dir/build.ninja" ]; then
+    cmake -S "$ARGUS_ROOT" -B "$dir" -G Ninja -DCMAKE_CXX_COMPILER_LAUNCHER=ccache "$@"
+  fi
+  cmake --build "$dir" --parallel "$(nproc)"
+}
+
+argus_install_missing

@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# Installs what is missing, then builds and runs the whole test suite three ways:
+#   Release; ASan+UBSan (everything); TSan (the actor layer, label "actors").
+#   scripts/test.sh            all three
+#   scripts/test.sh --quick    Release only
+# Any failing test or sanitizer report fails the script.
+set -euo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/setup.sh"
+cd "$ARGUS_ROOT"
+quick=0
+[ "${1:-}" = "--quick" ] && quick=1
+jobs="$(nproc)"
+
+echo "== Release build and tests"
+argus_build build -DCMAKE_BUILD_TYPE=Release
+ctest --test-dir build --output-on-failure -j "$jobs"
+[ "$quick" -eq 1 ] && exit 0
+
+export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:halt_on_error=1"
+export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+echo "== ASan+UBSan build and tests"
+argus_build build-asan -DCMAKE_BUILD_TYPE=Debug -DARGUS_SANITIZE=address,undefined \
+  -DARGUS_BUILD_BENCH=OFF
+ctest --test-dir build-asan --output-on-failure -j "$jobs"
+
+export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1:suppressions=$ARGUS_ROOT/tests/tsan.supp"
+echo "== TSan build and actor-layer tests"
+argus_build build-tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DARGUS_SANITIZE=thread \
+  -DARGUS_BUILD_BENCH=OFF
+ctest --test-dir build-tsan --output-on-failure -j "$jobs" -L actors

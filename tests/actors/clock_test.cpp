@@ -1,0 +1,208 @@
+#define CAF_SUITE actors.clock
+
+#include "actors/clock.hpp"
+
+#include <algorithm>
+
+#include "actors/system_config.hpp"
+#include "caf/test/dsl.hpp"
+#include "caf/test/unit_test_impl.hpp"
+#include "tests/actors/test_participants.hpp"
+
+using namespace argus::actors;
+using namespace argus::actors::testing;
+
+namespace {
+
+struct test_config : system_config {
+  test_config() : system_config(1) {}
+};
+
+struct fixture : test_coordinator_fixture<test_config> {
+  std::shared_ptr<recorded> rec = std::make_shared<recorded>();
+  std::shared_ptr<probe_log> log = std::make_shared<probe_log>();
+  caf::actor recorder = sys.spawn(fake_recorder, rec);
+
+  caf::actor make_clock(std::int64_t end_tick, double speed = 0.0) {
+    clock_settings s;
+    s.end_tick = end_tick;
+    s.speed = speed;
+    s.tick_seconds = 1.0 / 15.0;
+    return spawn_clock(sys, s, recorder, caf::actor{});
+  }
+
+  caf::actor add_probe(const caf::actor& clock, participant_info info,
+                       std::vector<std::uint64_t> wakes = {}, std::int64_t period = 0) {
+    auto p = sys.spawn(probe, info, log, std::move(wakes), period);
+    caf::anon_send(clock, join_atom_v, p, info);
+    return p;
+  }
+
+  // Starts the clock and runs everything (timeouts included) until the run is over.
+  run_result run_to_end(const caf::actor& clock) {
+    self->send(clock, start_atom_v);
+    run();
+    run_result result;
+    bool got = false;
+    self->receive([&](run_result& r) { result = std::move(r), got = true; },
+                  caf::after(std::chrono::seconds(0)) >> [] {});
+    CAF_REQUIRE(got);
+    return result;
+  }
+
+  std::size_t count(const std::string& entry) const {
+    return static_cast<std::size_t>(std::count(log->ticks.begin(), log->ticks.end(), entry));
+  }
+};
+
+participant_info info(std::uint64_t id, std::string name, phase p,
+                      wake_mode m = wake_mode::every_tick) {
+  return {id, std::move(name), p, m};
+}
+
+}  // namespace
+
+CAF_TEST_FIXTURE_SCOPE(clock_tests, fixture)
+
+CAF_TEST(every tick runs the phases in order and participants in id order) {
+  auto clock = make_clock(2);
+  // Joined out of order on purpose: the clock orders by phase, then id.
+  add_probe(clock, info(30, "cam-b", phase::cameras));
+  add_probe(clock, info(10, "crowd", phase::world));
+  add_probe(clock, info(20, "cam-a", phase::cameras));
+  add_probe(clock, info(5, "faults", phase::faults));
+  add_probe(clock, info(15, "link", phase::network));
+  auto result = run_to_end(clock);
+  CAF_CHECK_EQUAL(result.ticks, 2);
+  std::vector<std::string> expected{"0:0:faults", "0:1:crowd",  "0:2:link",  "0:3:cam-a",
+                                    "0:3:cam-b",  "1:0:faults", "1:1:crowd", "1:2:link",
+                                    "1:3:cam-a",  "1:3:cam-b"};
+  // cam-a and cam-b share a phase: both are ticked before either answers, in id order.
+  CAF_CHECK_EQUAL(log->ticks, expected);
+  CAF_REQUIRE_EQUAL(rec->events.size(), 10u);
+  CAF_CHECK_EQUAL(rec->events[3].source, "cam-a");
+  CAF_CHECK_EQUAL(rec->events[4].source, "cam-b");
+  CAF_CHECK(rec->done);
+}
+
+CAF_TEST(the next phase waits for every acknowledgement of the current one) {
+  auto clock = make_clock(1);
+  auto a = sys.spawn(silent);
+  auto b = sys.spawn(silent);
+  auto later = sys.spawn(silent);
+  self->send(clock, join_atom_v, a, info(1, "a", phase::world));
+  self->send(clock, join_atom_v, b, info(2, "b", phase::world));
+  self->send(clock, join_atom_v, later, info(3, "later", phase::cameras));
+  self->send(clock, start_atom_v);
+  sched.run();
+  // a and b got tick 0; `later` must not, until both acknowledged.
+  tick_ack ack_a;
+  ack_a.participant = 1;
+  inject((tick_ack), from(a).to(clock).with(ack_a));
+  disallow((tick_atom, std::int64_t, std::uint8_t), from(clock).to(later));
+  tick_ack ack_b;
+  ack_b.participant = 2;
+  inject((tick_ack), from(b).to(clock).with(ack_b));
+  expect((tick_atom, std::int64_t, std::uint8_t),
+         from(clock).to(later).with(_, std::int64_t{0}, std::uint8_t{3}));
+  tick_ack ack_later;
+  ack_later.participant = 3;
+  inject((tick_ack), from(later).to(clock).with(ack_later));
+  run();
+  CAF_CHECK(rec->done);
+}
+
+CAF_TEST(a participant killed mid tick does not stall the run) {
+  auto clock = make_clock(3);
+  add_probe(clock, info(1, "crowd", phase::world));
+  auto victim = sys.spawn(silent);  // will never acknowledge tick 0
+  self->send(clock, join_atom_v, victim, info(2, "victim", phase::cameras));
+  self->send(clock, start_atom_v);
+  sched.run();
+  CAF_CHECK_EQUAL(count("1:1:crowd"), 0u);  // stuck waiting for the victim
+  caf::anon_send_exit(victim, caf::exit_reason::kill);
+  run();
+  run_result result;
+  self->receive([&](run_result& r) { result = std::move(r); },
+                caf::after(std::chrono::seconds(0)) >> [] { CAF_FAIL("the run stalled"); });
+  CAF_CHECK_EQUAL(result.ticks, 3);
+  CAF_CHECK_EQUAL(count("2:1:crowd"), 1u);
+  CAF_REQUIRE_EQUAL(result.unexpected_down.size(), 1u);
+  CAF_CHECK_EQUAL(result.unexpected_down[0], "victim");
+  auto down = std::find_if(rec->events.begin(), rec->events.end(),
+                           [](const sim_event& e) { return e.kind == "participant_down"; });
+  CAF_REQUIRE(down != rec->events.end());
+  CAF_CHECK_EQUAL(down->tick, 0);
+  CAF_CHECK_EQUAL(down->source, "victim");
+}
+
+CAF_TEST(a retired participant leaves at once and is not reported as unexpected) {
+  auto clock = make_clock(3);
+  add_probe(clock, info(1, "crowd", phase::world));
+  auto victim = sys.spawn(silent);
+  self->send(clock, join_atom_v, victim, info(2, "victim", phase::cameras));
+  self->send(clock, start_atom_v);
+  sched.run();
+  self->send(clock, retire_atom_v, std::uint64_t{2});
+  caf::anon_send_exit(victim, caf::exit_reason::kill);
+  auto result = [&] {
+    run();
+    run_result r;
+    self->receive([&](run_result& x) { r = std::move(x); },
+                  caf::after(std::chrono::seconds(0)) >> [] { CAF_FAIL("the run stalled"); });
+    return r;
+  }();
+  CAF_CHECK_EQUAL(result.ticks, 3);
+  CAF_CHECK(result.unexpected_down.empty());
+}
+
+CAF_TEST(idle on demand participants cost nothing until woken) {
+  auto clock = make_clock(4);
+  // The waker, in the network phase, wakes "late" (cameras, a later phase: same tick) and
+  // "early" (world, an earlier phase: next tick), and only on ticks 0..3 as a probe does.
+  add_probe(clock, info(1, "early", phase::world, wake_mode::on_demand));
+  add_probe(clock, info(2, "late", phase::cameras, wake_mode::on_demand));
+  add_probe(clock, info(3, "sleeper", phase::cameras, wake_mode::on_demand));
+  add_probe(clock, info(9, "waker", phase::network, wake_mode::on_demand), {1, 2}, 2);
+  run_to_end(clock);
+  // Everyone on-demand is ticked once when it joins (tick 0).
+  CAF_CHECK_EQUAL(count("0:1:early"), 1u);
+  CAF_CHECK_EQUAL(count("0:3:sleeper"), 1u);
+  // The sleeper asked for nothing and got no mail: never ticked again.
+  CAF_CHECK_EQUAL(count("1:3:sleeper") + count("2:3:sleeper") + count("3:3:sleeper"), 0u);
+  // The waker runs at 0 and 2 (period 2); its mail wakes "late" the same tick...
+  CAF_CHECK_EQUAL(count("0:2:waker"), 1u);
+  CAF_CHECK_EQUAL(count("1:2:waker"), 0u);
+  CAF_CHECK_EQUAL(count("2:2:waker"), 1u);
+  CAF_CHECK_EQUAL(count("2:3:late"), 1u);
+  CAF_CHECK_EQUAL(count("1:3:late"), 0u);
+  // ...and "early" the next tick.
+  CAF_CHECK_EQUAL(count("1:1:early"), 1u);
+  CAF_CHECK_EQUAL(count("3:1:early"), 1u);
+  CAF_CHECK_EQUAL(count("2:1:early"), 0u);
+}
+
+CAF_TEST(at speed 1 virtual time stays within one tick of wall time) {
+  auto clock = make_clock(60, 1.0);
+  add_probe(clock, info(1, "crowd", phase::world));
+  self->send(clock, start_atom_v);
+  const auto tick = std::chrono::duration<double>(1.0 / 15.0);
+  const auto step = std::chrono::milliseconds(7);  // not a divisor of the tick on purpose
+  auto elapsed = caf::timespan{0};
+  std::int64_t ticks_done = 0;
+  for (int i = 0; i < 1000 && !rec->done; ++i) {
+    sched.run();
+    ticks_done = static_cast<std::int64_t>(log->ticks.size());
+    auto virtual_time = static_cast<double>(ticks_done) * tick.count();
+    auto wall_time = std::chrono::duration<double>(elapsed).count();
+    // Tick k starts at wall time k * tick: the clock is never ahead of wall time by more than
+    // the tick in progress, nor behind it by more than one tick.
+    CAF_CHECK_LESS_OR_EQUAL(virtual_time, wall_time + tick.count() + 1e-9);
+    CAF_CHECK_GREATER_OR_EQUAL(virtual_time, wall_time - tick.count() - 1e-9);
+    sched.advance_time(step);
+    elapsed += step;
+  }
+  CAF_CHECK_EQUAL(ticks_done, 60);
+}
+
+CAF_TEST_FIXTURE_SCOPE_END()

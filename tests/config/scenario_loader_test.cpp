@@ -1,0 +1,238 @@
+#include "config/scenario_loader.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+namespace argus::config {
+
+/// Lets GoogleTest print a problem as the user would see it.
+void PrintTo(const problem& what, std::ostream* out) {
+  *out << to_string(what);
+}
+
+namespace {
+
+using namespace std::chrono_literals;
+
+const std::filesystem::path data_dir{ARGUS_CONFIG_TEST_DATA_DIR};
+
+/// The problems `parse` throws, or none if it succeeds.
+template <class Parse>
+std::vector<problem> problems_of(Parse parse) {
+  try {
+    parse();
+  } catch (const scenario_error& error) {
+    return error.problems();
+  }
+  return {};
+}
+
+// Table 2 of the paper, network communication parameters: one assertion per parameter.
+TEST(scenario_loader, network_defaults_are_table_2) {
+  const auto loaded = parse_scenario("name: defaults\n", "defaults.yaml");
+  const auto& network = loaded.network;
+  EXPECT_EQ(network.loss_probability, 0.1);
+  EXPECT_EQ(network.min_delay, 200ms);
+  EXPECT_EQ(network.max_delay, 500ms);
+  EXPECT_EQ(network.node_failure_probability, 0.001);
+  EXPECT_EQ(network.max_hops, 3u);
+  EXPECT_EQ(network.message_timeout, 1500ms);
+}
+
+// Table 2, controller and at-node parameters, and the eq. (1) spreads.
+TEST(scenario_loader, controller_defaults_are_table_2) {
+  const auto loaded = parse_scenario("name: defaults\n", "defaults.yaml");
+  const auto& controller = loaded.controller;
+  EXPECT_EQ(controller.wait_timeout, 2min);
+  EXPECT_EQ(controller.search_timeout, 5min);
+  EXPECT_EQ(controller.min_relevance, 0.1);
+  EXPECT_EQ(controller.heartbeat_interval, 1000ms);
+  EXPECT_EQ(controller.leader_failure_timeout, 3000ms);
+  EXPECT_EQ(controller.member_failure_timeout, 5000ms);
+  EXPECT_EQ(controller.auction_relevance_threshold, 0.5);
+  EXPECT_EQ(controller.min_task_duration, 1min);
+  EXPECT_EQ(controller.membership_relevance_threshold, 0.1);
+  EXPECT_EQ(controller.merge_timeout, 5min);
+  EXPECT_EQ(controller.bidding_timeout, 2min);
+  EXPECT_EQ(controller.relevance_sigma_fov_deg, 5.0);
+  EXPECT_EQ(controller.relevance_sigma_pan_deg, 5.0);
+  EXPECT_EQ(controller.relevance_sigma_tilt_deg, 5.0);
+  EXPECT_EQ(controller.solver, conflict_solver::best_solv);
+}
+
+TEST(scenario_loader, fills_defaults_and_names_the_scenario_after_the_file) {
+  const auto loaded = parse_scenario("", "scenarios/empty_room.yaml");
+  EXPECT_EQ(loaded.name, "empty_room");
+  EXPECT_EQ(loaded.source_path, "scenarios/empty_room.yaml");
+  EXPECT_EQ(loaded.run, run_settings{});
+  EXPECT_TRUE(loaded.run.output_dir.empty());
+  EXPECT_EQ(loaded.world, world_settings{});
+  EXPECT_EQ(loaded.network, network_settings{});
+  EXPECT_EQ(loaded.controller, controller_settings{});
+  EXPECT_TRUE(loaded.cameras.empty());
+  EXPECT_TRUE(loaded.tasks.empty());
+  EXPECT_TRUE(loaded.faults.empty());
+}
+
+TEST(scenario_loader, empty_sections_keep_their_defaults) {
+  const auto loaded = parse_scenario("run:\nworld:\nnetwork: {}\ncameras:\n", "x.yaml");
+  EXPECT_EQ(loaded.run, run_settings{});
+  EXPECT_EQ(loaded.world, world_settings{});
+  EXPECT_EQ(loaded.network, network_settings{});
+  EXPECT_TRUE(loaded.cameras.empty());
+}
+
+TEST(scenario_loader, reads_every_field_of_a_full_scenario) {
+  const auto file = data_dir / "full.yaml";
+  const auto loaded = load_scenario(file);
+  EXPECT_EQ(loaded.name, "full_demo");
+  EXPECT_EQ(loaded.source_path, file.string());
+
+  EXPECT_EQ(loaded.run.seed, 7u);
+  EXPECT_EQ(loaded.run.duration, 2min);
+  EXPECT_EQ(loaded.run.tick, seconds{1.0 / 30.0});
+  EXPECT_EQ(loaded.run.speed, 2.5);
+  EXPECT_EQ(loaded.run.threads, 2u);
+  EXPECT_EQ(loaded.run.output_dir, "out/demo");
+
+  EXPECT_EQ(loaded.world.layout, "stations/x.yaml");
+  EXPECT_EQ(loaded.world.population, 250u);
+  EXPECT_EQ(loaded.world.spawn_rate_per_min, 45.0);
+  EXPECT_EQ(loaded.world.partitions, 4u);
+
+  ASSERT_EQ(loaded.cameras.size(), 3u);
+  const auto& first = loaded.cameras[0];
+  EXPECT_EQ(first.id, 1);
+  EXPECT_EQ(first.position, (plan_point{10.0, 20.0}));
+  EXPECT_EQ(first.height_m, 5.5);
+  EXPECT_EQ(first.type, camera_type::static_camera);
+  EXPECT_EQ(first.pan_deg, 30.0);
+  EXPECT_EQ(first.tilt_deg, -30.0);
+  EXPECT_EQ(first.field_of_view_deg, 60.0);
+  EXPECT_EQ(first.pan_limits, (degree_range{-90.0, 90.0}));
+  EXPECT_EQ(first.tilt_limits, (degree_range{-60.0, 0.0}));
+  EXPECT_EQ(first.field_of_view_limits, (degree_range{10.0, 80.0}));
+  EXPECT_EQ(first.pan_rate_deg_per_s, 45.0);
+  EXPECT_EQ(first.tilt_rate_deg_per_s, 25.0);
+  EXPECT_EQ(first.zoom_rate_deg_per_s, 15.0);
+  const auto& imaging = first.imaging;
+  EXPECT_EQ(imaging.width_px, 320u);
+  EXPECT_EQ(imaging.height_px, 240u);
+  EXPECT_TRUE(imaging.color_response_enabled);
+  EXPECT_EQ(imaging.response, (color_response{10.0, 0.9, 1.1, 0.05, 0.2, 0.3, 0.1}));
+  EXPECT_EQ(imaging.noise_sigma, 4.0);
+  EXPECT_EQ(imaging.dropout_fraction, 0.01);
+  EXPECT_EQ(imaging.dropout, dropout_kind::salt_and_pepper);
+  EXPECT_EQ(imaging.jpeg_quality, 75u);
+  EXPECT_TRUE(imaging.interlace);
+
+  EXPECT_EQ(loaded.cameras[1].position, (plan_point{30.5, -4.0}));  // list form
+  EXPECT_EQ(loaded.cameras[1].type, camera_type::ptz);
+  EXPECT_FALSE(loaded.cameras[2].imaging.color_response_enabled);
+  EXPECT_EQ(loaded.cameras[2].imaging.dropout, dropout_kind::bit_flip);
+
+  const auto& network = loaded.network;
+  EXPECT_EQ(network.loss_probability, 0.2);
+  EXPECT_EQ(network.min_delay, 100ms);
+  EXPECT_EQ(network.max_delay, 750ms);
+  EXPECT_EQ(network.node_failure_probability, 0.01);
+  EXPECT_EQ(network.max_hops, 5u);
+  EXPECT_EQ(network.message_timeout, 2s);
+  EXPECT_EQ(network.communication_range_m, 25.0);
+  EXPECT_EQ(network.adjacency, (std::vector<std::array<int, 2>>{{1, 2}, {2, 3}}));
+  EXPECT_EQ(network.duplicate_probability, 0.05);
+  EXPECT_TRUE(network.reorder);
+
+  const auto& controller = loaded.controller;
+  EXPECT_EQ(controller.wait_timeout, 90s);
+  EXPECT_EQ(controller.search_timeout, 4min);
+  EXPECT_EQ(controller.min_relevance, 0.2);
+  EXPECT_EQ(controller.heartbeat_interval, 500ms);
+  EXPECT_EQ(controller.leader_failure_timeout, 2500ms);
+  EXPECT_EQ(controller.member_failure_timeout, 6s);
+  EXPECT_EQ(controller.auction_relevance_threshold, 0.6);
+  EXPECT_EQ(controller.min_task_duration, 30s);
+  EXPECT_EQ(controller.membership_relevance_threshold, 0.15);
+  EXPECT_EQ(controller.merge_timeout, 3min);
+  EXPECT_EQ(controller.bidding_timeout, 1min);
+  EXPECT_EQ(controller.relevance_sigma_fov_deg, 4.0);
+  EXPECT_EQ(controller.relevance_sigma_pan_deg, 6.0);
+  EXPECT_EQ(controller.relevance_sigma_tilt_deg, 7.0);
+  EXPECT_EQ(controller.solver, conflict_solver::all_solv);
+
+  ASSERT_EQ(loaded.tasks.size(), 1u);
+  EXPECT_EQ(loaded.tasks[0].at, 10s);
+  EXPECT_EQ(loaded.tasks[0].pedestrian, 12);
+  EXPECT_EQ(loaded.tasks[0].camera, 2);
+  EXPECT_EQ(loaded.tasks[0].cameras_wanted, 2u);
+
+  ASSERT_EQ(loaded.faults.size(), 5u);
+  EXPECT_EQ(loaded.faults[0].kind, fault_kind::crash);
+  EXPECT_EQ(loaded.faults[0].peer, std::nullopt);
+  EXPECT_EQ(loaded.faults[1].kind, fault_kind::crash_and_recover);
+  EXPECT_EQ(loaded.faults[1].length, 30s);
+  EXPECT_EQ(loaded.faults[2].kind, fault_kind::link_cut);
+  EXPECT_EQ(loaded.faults[2].peer, 2);
+  EXPECT_EQ(loaded.faults[3].kind, fault_kind::link_heal);
+  EXPECT_EQ(loaded.faults[4].kind, fault_kind::loss_burst);
+  EXPECT_EQ(loaded.faults[4].at, 120s);
+  EXPECT_EQ(loaded.faults[4].camera, 2);
+  EXPECT_EQ(loaded.faults[4].length, 5s);
+  EXPECT_EQ(loaded.faults[4].loss_probability, 0.8);
+}
+
+TEST(scenario_loader, color_response_on_enables_the_default_response) {
+  const auto loaded = parse_scenario(
+      "cameras:\n  - {id: 1, position: [0, 0], imaging: {color_response: on}}\n", "x.yaml");
+  EXPECT_TRUE(loaded.cameras[0].imaging.color_response_enabled);
+  EXPECT_EQ(loaded.cameras[0].imaging.response, color_response{});
+}
+
+TEST(scenario_loader, loads_the_minimal_scenario) {
+  const auto loaded =
+      load_scenario(std::filesystem::path{ARGUS_SOURCE_DIR} / "scenarios" / "minimal.yaml");
+  EXPECT_EQ(loaded.name, "minimal");
+  EXPECT_EQ(loaded.run.duration, 20s);
+  ASSERT_EQ(loaded.cameras.size(), 4u);
+  for (const auto& camera : loaded.cameras) {
+    // Around a 40 m x 30 m room.
+    EXPECT_GE(camera.position.x_m, 0.0);
+    EXPECT_LE(camera.position.x_m, 40.0);
+    EXPECT_GE(camera.position.y_m, 0.0);
+    EXPECT_LE(camera.position.y_m, 30.0);
+  }
+  EXPECT_EQ(loaded.tasks.size(), 1u);
+  EXPECT_EQ(loaded.faults.size(), 1u);
+}
+
+TEST(scenario_loader, a_missing_file_names_the_file_and_the_reason) {
+  const auto file = data_dir / "no_such_file.yaml";
+  const auto problems = problems_of([&] { load_scenario(file); });
+  ASSERT_EQ(problems.size(), 1u);
+  EXPECT_EQ(problems[0],
+            (problem{file.string(), 0, 0, "", "cannot open file: No such file or directory"}));
+}
+
+TEST(scenario_loader, a_directory_cannot_be_opened_as_a_file) {
+  const auto problems = problems_of([&] { load_scenario(data_dir); });
+  ASSERT_EQ(problems.size(), 1u);
+  EXPECT_EQ(problems[0],
+            (problem{data_dir.string(), 0, 0, "", "cannot open file: Is a directory"}));
+}
+
+TEST(scenario_loader, a_yaml_syntax_error_gives_file_line_column_and_yaml_cpp_message) {
+  const auto file = data_dir / "syntax_error.yaml";
+  const auto problems = problems_of([&] { load_scenario(file); });
+  ASSERT_EQ(problems.size(), 1u);
+  EXPECT_EQ(problems[0], (problem{file.string(), 2, 6, "", "end of map flow not found"}));
+}
+
+TEST(scenario_loader, rejects_a_second_document) {
+  const auto problems = problems_of([] { parse_scenario("name: a\n---\nname: b\n", "two.yaml"); });
+  ASSERT_EQ(problems.size(), 1u);
+  EXPECT_EQ(problems[0], (problem{"two.yaml", 3, 1, "", "expected one YAML document, got 2"}));
+}
+
+}  // namespace
+}  // namespace argus::config

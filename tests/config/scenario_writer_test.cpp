@@ -1,0 +1,91 @@
+#include "config/scenario_writer.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "config/scenario_loader.hpp"
+
+namespace argus::config {
+namespace {
+
+using namespace std::chrono_literals;
+
+const std::filesystem::path data_dir{ARGUS_CONFIG_TEST_DATA_DIR};
+
+/// Writes `original` and reads it back; source_path is not part of the text.
+scenario round_trip(const scenario& original) {
+  auto back = parse_scenario(to_yaml(original), "written.yaml");
+  back.source_path = original.source_path;
+  return back;
+}
+
+/// Section by section first, so a failure says which part was lost.
+void expect_same(const scenario& back, const scenario& original) {
+  EXPECT_EQ(back.name, original.name);
+  EXPECT_EQ(back.run, original.run);
+  EXPECT_EQ(back.world, original.world);
+  EXPECT_EQ(back.cameras, original.cameras);
+  EXPECT_EQ(back.network, original.network);
+  EXPECT_EQ(back.controller, original.controller);
+  EXPECT_EQ(back.tasks, original.tasks);
+  EXPECT_EQ(back.faults, original.faults);
+  EXPECT_EQ(back, original);
+}
+
+TEST(scenario_writer, round_trips_a_full_scenario) {
+  // full.yaml sets every field away from its default, so a field the writer forgot would
+  // come back as the default and differ.
+  const auto original = load_scenario(data_dir / "full.yaml");
+  expect_same(round_trip(original), original);
+}
+
+TEST(scenario_writer, round_trips_a_defaults_only_scenario) {
+  const auto original = parse_scenario("", "defaults.yaml");
+  expect_same(round_trip(original), original);
+}
+
+TEST(scenario_writer, round_trips_awkward_values_exactly) {
+  scenario original;
+  original.name = "a: tricky # name \"quoted\"";
+  original.run.tick = seconds{1.0 / 15.0};
+  original.run.duration = seconds{0.1 + 0.2};
+  original.run.seed = 18446744073709551615u;
+  original.run.speed = 1.0 / 3.0;
+  original.world.layout = "null";
+  camera_settings camera;
+  camera.id = 5;
+  camera.position = {-1e-9, 12345.678};
+  // Parameters set but switched off must survive too.
+  camera.imaging.color_response_enabled = false;
+  camera.imaging.response.tint = 0.25;
+  original.cameras.push_back(camera);
+  original.faults.push_back(fault{1.5s, fault_kind::crash, 5, std::nullopt, 0s, 1.0});
+  original.tasks.push_back(operator_task{seconds{2.0 / 3.0}, 0, 5, 1});
+  expect_same(round_trip(original), original);
+}
+
+TEST(scenario_writer, writes_defaults_durations_and_enums_readably) {
+  const auto text = to_yaml(parse_scenario("", "defaults.yaml"));
+  EXPECT_NE(text.find("\n  tick: 1/15 s\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("\n  message_timeout: 1500 ms\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("\n  min_delay: 200 ms\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("\n  wait_timeout: 2 min\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("\n  solver: best_solv\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("\n  output_dir: \"\"\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("\ncameras: []\n"), std::string::npos) << text;
+}
+
+TEST(scenario_writer, writes_a_camera_with_every_field) {
+  const auto text =
+      to_yaml(parse_scenario("cameras:\n  - {id: 2, position: [1, 2], type: static}\n", "x.yaml"));
+  EXPECT_NE(text.find("  - id: 2\n    position: {x_m: 1, y_m: 2}\n    height_m: 4\n    type: "
+                      "static\n"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("\n      color_response: off\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("\n      dropout: {fraction: 0, kind: snow}\n"), std::string::npos) << text;
+}
+
+}  // namespace
+}  // namespace argus::config
