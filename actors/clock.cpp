@@ -68,6 +68,8 @@ class clock_actor : public caf::event_based_actor {
     participant_info info;
     /// Calendar tick of an on-demand participant, or -1 when none is booked.
     std::int64_t booked = -1;
+    /// Ticked in the current phase and not yet acknowledged.
+    bool awaited = false;
   };
 
   static std::size_t index(phase p) { return static_cast<std::size_t>(p); }
@@ -127,9 +129,8 @@ class clock_actor : public caf::event_based_actor {
     while (phase_ < phase_count) {
       apply_joins();  // joins sent from inside a tick precede their sender's ack
       collect_due();
-      if (!awaiting_.empty()) {
-        for (auto id : awaiting_)
-          send(participants_[id].handle, tick_atom_v, tick_, static_cast<std::uint8_t>(phase_));
+      if (awaiting_ > 0) {
+        for (auto* e : due_) send(e->handle, tick_atom_v, tick_, static_cast<std::uint8_t>(phase_));
         return;
       }
       ++phase_;
@@ -137,20 +138,30 @@ class clock_actor : public caf::event_based_actor {
     finish_tick();
   }
 
+  // Fills due_ with this phase's participants, in id order, and marks them awaited.
   void collect_due() {
-    awaiting_ = every_tick_[phase_];
+    due_.clear();
     auto& cal = calendar_[phase_];
     while (!cal.empty() && cal.begin()->first <= tick_) {
       for (auto id : cal.begin()->second) {
-        participants_[id].booked = -1;
-        awaiting_.insert(id);
+        auto& e = participants_[id];
+        e.booked = -1;
+        due_.push_back(&e);
       }
       cal.erase(cal.begin());
     }
+    bool from_calendar = !due_.empty();
+    for (auto id : every_tick_[phase_]) due_.push_back(&participants_[id]);
+    if (from_calendar)
+      std::sort(due_.begin(), due_.end(),
+                [](const entry* a, const entry* b) { return a->info.id < b->info.id; });
+    for (auto* e : due_) e->awaited = true;
+    awaiting_ = due_.size();
   }
 
   void on_ack(tick_ack& ack) {
-    if (ack.tick != tick_ || awaiting_.count(ack.participant) == 0) {
+    auto it = participants_.find(ack.participant);
+    if (ack.tick != tick_ || it == participants_.end() || !it->second.awaited) {
       spdlog::warn("clock: stray ack from participant {} for tick {} (now tick {})",
                    ack.participant, ack.tick, tick_);
       return;
@@ -158,14 +169,14 @@ class clock_actor : public caf::event_based_actor {
     for (auto& ev : ack.events) batch_.push_back(std::move(ev));
     if (ack.next_wakeup != no_wakeup) book(ack.participant, std::max(ack.next_wakeup, tick_ + 1));
     for (auto id : ack.woken) {
-      auto it = participants_.find(id);
-      if (it == participants_.end()) continue;
+      auto target = participants_.find(id);
+      if (target == participants_.end()) continue;
       // Mail for a later phase is read this tick; for this or an earlier phase, next tick.
-      auto later = index(it->second.info.tick_phase) > phase_;
+      auto later = index(target->second.info.tick_phase) > phase_;
       book(id, later ? tick_ : tick_ + 1);
     }
-    awaiting_.erase(ack.participant);
-    if (awaiting_.empty()) {
+    it->second.awaited = false;
+    if (--awaiting_ == 0) {
       ++phase_;
       run_phases();
     }
@@ -211,8 +222,10 @@ class clock_actor : public caf::event_based_actor {
     if (expected) retired_.insert(id);
     every_tick_[index(e.info.tick_phase)].erase(id);
     if (e.booked >= 0) unbook(calendar_[index(e.info.tick_phase)], e.booked, id);
+    bool was_awaited = e.awaited;
+    due_.erase(std::remove(due_.begin(), due_.end(), &e), due_.end());
     participants_.erase(it);
-    if (awaiting_.erase(id) != 0 && awaiting_.empty() && started_ && !finished_) {
+    if (was_awaited && --awaiting_ == 0 && started_ && !finished_) {
       ++phase_;
       run_phases();
     }
@@ -313,7 +326,8 @@ class clock_actor : public caf::event_based_actor {
 
   std::int64_t tick_ = 0;
   std::size_t phase_ = 0;
-  std::set<std::uint64_t> awaiting_;
+  std::vector<entry*> due_;
+  std::size_t awaiting_ = 0;
   std::vector<sim_event> batch_;
   std::size_t unwritten_batches_ = 0;
   bool waiting_for_recorder_ = false;

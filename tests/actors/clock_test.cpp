@@ -87,9 +87,9 @@ CAF_TEST(every tick runs the phases in order and participants in id order) {
 
 CAF_TEST(the next phase waits for every acknowledgement of the current one) {
   auto clock = make_clock(1);
-  auto a = sys.spawn(silent);
-  auto b = sys.spawn(silent);
-  auto later = sys.spawn(silent);
+  auto a = sys.spawn(silent, "x");
+  auto b = sys.spawn(silent, "x");
+  auto later = sys.spawn(silent, "x");
   self->send(clock, join_atom_v, a, info(1, "a", phase::world));
   self->send(clock, join_atom_v, b, info(2, "b", phase::world));
   self->send(clock, join_atom_v, later, info(3, "later", phase::cameras));
@@ -115,7 +115,7 @@ CAF_TEST(the next phase waits for every acknowledgement of the current one) {
 CAF_TEST(a participant killed mid tick does not stall the run) {
   auto clock = make_clock(3);
   add_probe(clock, info(1, "crowd", phase::world));
-  auto victim = sys.spawn(silent);  // will never acknowledge tick 0
+  auto victim = sys.spawn(silent, "x");  // will never acknowledge tick 0
   self->send(clock, join_atom_v, victim, info(2, "victim", phase::cameras));
   self->send(clock, start_atom_v);
   sched.run();
@@ -139,7 +139,7 @@ CAF_TEST(a participant killed mid tick does not stall the run) {
 CAF_TEST(a retired participant leaves at once and is not reported as unexpected) {
   auto clock = make_clock(3);
   add_probe(clock, info(1, "crowd", phase::world));
-  auto victim = sys.spawn(silent);
+  auto victim = sys.spawn(silent, "x");
   self->send(clock, join_atom_v, victim, info(2, "victim", phase::cameras));
   self->send(clock, start_atom_v);
   sched.run();

@@ -1,0 +1,129 @@
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string_view>
+
+#include "world/layout.hpp"
+#include "world/rng.hpp"
+
+namespace argus::world {
+
+/// What a pedestrian is doing, as ground truth for the recorder and the evaluation. The
+/// "waiting" activities (queueing .. meeting) are the ones where standing still is normal.
+enum class activity : std::uint8_t {
+  walking,                ///< heading for an intermediate goal
+  queueing,               ///< in a line at a ticket booth or vending machine
+  buying_ticket,          ///< at the head of a ticket line, being served
+  using_vending_machine,  ///< at a vending machine
+  sitting,                ///< resting on a bench
+  meeting,                ///< waiting for someone at a meeting point
+  leaving,                ///< heading for a platform or a street exit
+};
+
+/// The name of an activity ("buying_ticket"), as written in trajectories.csv.
+std::string_view to_string(activity a) noexcept;
+
+/// Whether standing still is expected in activity `a`.
+constexpr bool is_waiting(activity a) noexcept {
+  return a != activity::walking && a != activity::leaving;
+}
+
+/// The goals a pedestrian pursues (Section II: buy a ticket, rest on a bench when tired, use
+/// a vending machine when hungry or thirsty, meet someone, and eventually go down to the
+/// platforms or leave).
+enum class goal_kind : std::uint8_t {
+  buy_ticket,
+  rest_on_bench,
+  use_vending_machine,
+  meet_in_waiting_room,
+  go_to_platform,
+  leave_station,
+};
+
+/// Number of goal kinds.
+inline constexpr std::size_t goal_kind_count = 6;
+
+/// The name of a goal kind ("rest_on_bench").
+std::string_view to_string(goal_kind g) noexcept;
+
+/// An 8-bit sRGB colour.
+struct rgb8 {
+  std::uint8_t r = 0;
+  std::uint8_t g = 0;
+  std::uint8_t b = 0;
+  friend bool operator==(const rgb8&, const rgb8&) = default;
+};
+
+/// What a camera can see of a pedestrian: the colours colour indexing works on (Section
+/// III-B) and the body's size. Palettes deliberately hold near-twins (two reds, two navy
+/// blues) so that trackers can confuse pedestrians, as the paper notes.
+struct appearance {
+  rgb8 shirt;
+  rgb8 trousers;
+  rgb8 skin;
+  rgb8 hair;
+  double height_m = 1.7;
+  /// Shoulder width; the body's collision disc has radius girth_m / 2.
+  double girth_m = 0.46;
+  friend bool operator==(const appearance&, const appearance&) = default;
+};
+
+/// Draws an appearance from the palettes.
+appearance draw_appearance(rng& random);
+
+/// The public, per-tick state of one pedestrian: ground truth (id, position, velocity,
+/// heading, activity, body) plus what others need to coordinate deterministically (which
+/// line it stands in and since when, which seat it claims). This is what a snapshot holds.
+struct pedestrian_state {
+  int id = 0;
+  vec2 position{0.0, 0.0};
+  vec2 velocity{0.0, 0.0};
+  /// Direction the body faces, radians from +x, counter-clockwise.
+  double heading_rad = 0.0;
+  activity doing = activity::walking;
+  goal_kind goal = goal_kind::go_to_platform;
+  appearance look;
+  /// Service counter whose line this pedestrian is in, or -1.
+  int counter = -1;
+  /// Tick it joined that line: the line is served in (join tick, id) order.
+  std::uint64_t queue_join_tick = 0;
+  /// Seat claimed (walking to it or sitting), or -1.
+  int seat = -1;
+  /// Walking distance left to the current goal, metres.
+  double distance_to_goal_m = 0.0;
+  /// Incremented at every goal change, so observers can tell goals apart.
+  std::uint32_t goal_serial = 0;
+
+  /// Radius of the collision disc.
+  double radius_m() const noexcept { return look.girth_m / 2.0; }
+};
+
+/// A pedestrian's full state, owned by the partition that steps it: the public state plus
+/// its private mind (agenda, current target, timers) and its own RNG.
+struct pedestrian {
+  pedestrian_state state;
+  rng random;
+  /// Goals to pursue in order; the last is always go_to_platform or leave_station.
+  std::array<goal_kind, 6> agenda{};
+  std::uint8_t agenda_size = 0;
+  std::uint8_t agenda_next = 0;
+  /// Preferred walking speed, m/s.
+  double preferred_speed_mps = 1.3;
+  /// The distance field being descended (see station::target), or -1.
+  int field = -1;
+  /// Index of the portal, stairs, counter, bench or meeting point targeted.
+  int target_index = -1;
+  /// A point to stop at (seat, queue slot, meeting spot); used when `has_point`.
+  vec2 point{0.0, 0.0};
+  bool has_point = false;
+  /// Time left in the current waiting activity, seconds.
+  double timer_s = 0.0;
+  /// Progress watchdog: best distance to the goal so far and time since it improved.
+  double best_distance_m = 0.0;
+  double stalled_s = 0.0;
+  /// Portal it came in by (-1 for stairs), so it does not leave by the same door at once.
+  int entry_portal = -1;
+};
+
+}  // namespace argus::world

@@ -1,0 +1,97 @@
+#pragma once
+
+#include <algorithm>
+#include <chrono>
+#include <cstdint>
+#include <span>
+#include <utility>
+#include <vector>
+
+#include "world/event.hpp"
+#include "world/pedestrian.hpp"
+
+namespace argus::world {
+
+class station;
+
+/// The world at the end of one tick, immutable once built and shared by every reader
+/// (`std::shared_ptr<const snapshot>`): every pedestrian's public state in id order, a
+/// uniform-grid index for neighbour queries, the ticket/vending lines in service order and
+/// the seat claims, and the tick's events. Everything a pedestrian decides in the next tick
+/// is decided from this object only, which makes the result independent of stepping order
+/// and of the partitioning (paper Section II's crowd, stepped as RVO2 does).
+class snapshot {
+ public:
+  /// Grid cell size of the neighbour index; no interaction reaches farther.
+  static constexpr double neighbour_cell_m = 2.0;
+
+  /// Builds the indices; `pedestrians` need not be sorted, `events` are sorted stably by
+  /// pedestrian id.
+  snapshot(const station& where, std::uint64_t tick, std::chrono::duration<double> time,
+           std::vector<pedestrian_state> pedestrians, std::vector<event> events = {});
+
+  /// The tick this snapshot ends (0 = initial state).
+  std::uint64_t tick() const noexcept { return tick_; }
+  /// Virtual time at the end of the tick.
+  std::chrono::duration<double> time() const noexcept { return time_; }
+
+  /// Every pedestrian, sorted by id.
+  std::span<const pedestrian_state> pedestrians() const noexcept { return pedestrians_; }
+  /// The pedestrian with `id`, or nullptr.
+  const pedestrian_state* find(int id) const;
+  /// Events of this tick, by pedestrian id.
+  std::span<const event> events() const noexcept { return events_; }
+
+  /// Calls `visit(const pedestrian_state&)` for every pedestrian in the 3 x 3 index cells
+  /// around `p` (a superset of those within neighbour_cell_m), in an order that depends only
+  /// on the snapshot's content.
+  template <class Visitor>
+  void for_each_near(const vec2& p, Visitor&& visit) const {
+    const int cx = cell_x(p.x());
+    const int cy = cell_y(p.y());
+    for (int y = std::max(0, cy - 1); y <= std::min(grid_h_ - 1, cy + 1); ++y) {
+      const int row = y * grid_w_;
+      const int x0 = std::max(0, cx - 1);
+      const int x1 = std::min(grid_w_ - 1, cx + 1);
+      for (std::uint32_t k = cell_start_[row + x0]; k < cell_start_[row + x1 + 1]; ++k) {
+        visit(pedestrians_[cell_items_[k]]);
+      }
+    }
+  }
+
+  /// Number of pedestrians in counter `counter`'s line (walking to it, waiting or served).
+  std::size_t queue_length(int counter) const { return queues_[counter].size(); }
+  /// Place in line of a pedestrian who joined counter `counter` at `join_tick`: the number
+  /// of pedestrians ahead of it, ordered by (join tick, id).
+  std::size_t queue_rank(int counter, std::uint64_t join_tick, int id) const;
+  /// The line of counter `counter` in service order: (join tick, id) pairs.
+  std::span<const std::pair<std::uint64_t, int>> queue(int counter) const {
+    return queues_[counter];
+  }
+  /// The pedestrian with the lowest id claiming seat `seat`, or -1: the seat is theirs.
+  int seat_holder(int seat) const { return seat_holder_[seat]; }
+
+ private:
+  int cell_x(double x) const {
+    return std::clamp(static_cast<int>(x / neighbour_cell_m), 0, grid_w_ - 1);
+  }
+  int cell_y(double y) const {
+    return std::clamp(static_cast<int>(y / neighbour_cell_m), 0, grid_h_ - 1);
+  }
+
+  std::uint64_t tick_ = 0;
+  std::chrono::duration<double> time_{0.0};
+  std::vector<pedestrian_state> pedestrians_;
+  std::vector<event> events_;
+  int grid_w_ = 1;
+  int grid_h_ = 1;
+  // CSR neighbour index: cell c holds cell_items_[cell_start_[c] .. cell_start_[c + 1]),
+  // indices into pedestrians_ in id order; a row's cells are contiguous, so one range spans
+  // three cells.
+  std::vector<std::uint32_t> cell_start_;
+  std::vector<std::uint32_t> cell_items_;
+  std::vector<std::vector<std::pair<std::uint64_t, int>>> queues_;
+  std::vector<int> seat_holder_;
+};
+
+}  // namespace argus::world

@@ -1,0 +1,363 @@
+#include "world/station.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <queue>
+#include <stdexcept>
+
+#include "world/layout_loader.hpp"
+
+namespace argus::world {
+
+namespace {
+
+constexpr float unreachable = std::numeric_limits<float>::infinity();
+
+/// Even-odd point-in-polygon test.
+bool inside_polygon(const std::vector<vec2>& polygon, const vec2& p) {
+  bool inside = false;
+  for (std::size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
+    const vec2& a = polygon[i];
+    const vec2& b = polygon[j];
+    if ((a.y() > p.y()) != (b.y() > p.y()) &&
+        p.x() < (b.x() - a.x()) * (p.y() - a.y()) / (b.y() - a.y()) + a.x()) {
+      inside = !inside;
+    }
+  }
+  return inside;
+}
+
+}  // namespace
+
+vec2 segment::closest_point(const vec2& p) const {
+  const vec2 ab = b - a;
+  const double length2 = ab.squaredNorm();
+  if (length2 <= 0.0) return a;
+  const double t = std::clamp((p - a).dot(ab) / length2, 0.0, 1.0);
+  return a + t * ab;
+}
+
+station::station(layout plan, navigation_settings settings)
+    : plan_(std::move(plan)), settings_(settings) {
+  for (const auto& booth : plan_.ticket_booths) counters_.push_back(&booth);
+  for (const auto& machine : plan_.vending_machines) counters_.push_back(&machine);
+  for (std::size_t b = 0; b < plan_.benches.size(); ++b) {
+    const auto& each = plan_.benches[b];
+    const vec2 along = each.to - each.from;
+    for (unsigned s = 0; s < each.seats; ++s) {
+      // Seats sit 0.45 m in front of the bench line: a sitter's centre, clear of the bench.
+      const vec2 at = each.from + along * ((s + 0.5) / each.seats) + 0.45 * each.facing;
+      seats_.push_back({at, static_cast<int>(b)});
+    }
+  }
+  build_segments();
+  build_segment_index();
+  build_grid();
+  build_fields();
+}
+
+std::shared_ptr<const station> station::load(const std::filesystem::path& file) {
+  return std::make_shared<const station>(load_layout(file));
+}
+
+void station::build_segments() {
+  for (const auto& w : plan_.walls) {
+    for (std::size_t i = 1; i < w.points.size(); ++i) segments_.push_back({w.points[i - 1], w.points[i]});
+  }
+  auto add_polygon = [&](const std::vector<vec2>& polygon) {
+    for (std::size_t i = 0; i < polygon.size(); ++i) {
+      segments_.push_back({polygon[i], polygon[(i + 1) % polygon.size()]});
+    }
+  };
+  for (const auto& o : plan_.obstacles) add_polygon(o.polygon);
+  for (const auto* c : counters_) {
+    const box& f = c->footprint;
+    add_polygon({f.min, {f.max.x(), f.min.y()}, f.max, {f.min.x(), f.max.y()}});
+  }
+  for (const auto& b : plan_.benches) segments_.push_back({b.from, b.to});
+}
+
+void station::build_segment_index() {
+  index_w_ = static_cast<int>(std::ceil(plan_.size_m.x() / index_cell_m)) + 1;
+  index_h_ = static_cast<int>(std::ceil(plan_.size_m.y() / index_cell_m)) + 1;
+  std::vector<std::vector<std::uint32_t>> cells(static_cast<std::size_t>(index_w_ * index_h_));
+  // A segment within reach of any point of a cell is within reach + half a diagonal of its
+  // centre.
+  const double reach = segment_reach_m + index_cell_m * std::sqrt(0.5);
+  for (std::uint32_t s = 0; s < segments_.size(); ++s) {
+    const auto& seg = segments_[s];
+    const int x0 = std::max(0, static_cast<int>((std::min(seg.a.x(), seg.b.x()) - reach) / index_cell_m));
+    const int x1 = std::min(index_w_ - 1, static_cast<int>((std::max(seg.a.x(), seg.b.x()) + reach) / index_cell_m));
+    const int y0 = std::max(0, static_cast<int>((std::min(seg.a.y(), seg.b.y()) - reach) / index_cell_m));
+    const int y1 = std::min(index_h_ - 1, static_cast<int>((std::max(seg.a.y(), seg.b.y()) + reach) / index_cell_m));
+    for (int y = y0; y <= y1; ++y) {
+      for (int x = x0; x <= x1; ++x) {
+        const vec2 centre{(x + 0.5) * index_cell_m, (y + 0.5) * index_cell_m};
+        if ((seg.closest_point(centre) - centre).norm() <= reach) cells[y * index_w_ + x].push_back(s);
+      }
+    }
+  }
+  index_start_.assign(cells.size() + 1, 0);
+  for (std::size_t c = 0; c < cells.size(); ++c) {
+    index_start_[c + 1] = index_start_[c] + static_cast<std::uint32_t>(cells[c].size());
+    index_items_.insert(index_items_.end(), cells[c].begin(), cells[c].end());
+  }
+}
+
+std::span<const std::uint32_t> station::segments_near(const vec2& p) const {
+  const int x = std::clamp(static_cast<int>(p.x() / index_cell_m), 0, index_w_ - 1);
+  const int y = std::clamp(static_cast<int>(p.y() / index_cell_m), 0, index_h_ - 1);
+  const auto c = static_cast<std::size_t>(y * index_w_ + x);
+  return {index_items_.data() + index_start_[c], index_start_[c + 1] - index_start_[c]};
+}
+
+double station::wall_clearance(const vec2& p) const {
+  double best = segment_reach_m;
+  for (const auto s : segments_near(p)) {
+    best = std::min(best, (segments_[s].closest_point(p) - p).norm());
+  }
+  return best;
+}
+
+bool station::walkable(const vec2& p) const {
+  const region* r = region_at(p);
+  if (r == nullptr || r->kind == region_kind::tracks) return false;
+  for (const auto& o : plan_.obstacles) {
+    if (inside_polygon(o.polygon, p)) return false;
+  }
+  for (const auto* c : counters_) {
+    if (c->footprint.contains(p)) return false;
+  }
+  return true;
+}
+
+bool station::fits(const vec2& p, double radius_m) const {
+  if (p.x() < 0.0 || p.y() < 0.0 || p.x() >= plan_.size_m.x() || p.y() >= plan_.size_m.y()) {
+    return false;
+  }
+  const int c = cell_index(p);
+  return blocked_[c] == 0 && walkable(p) && wall_clearance(p) > radius_m + 0.05;
+}
+
+const region* station::region_at(const vec2& p) const {
+  for (const auto& r : plan_.regions) {
+    if (r.area.contains(p)) return &r;
+  }
+  return nullptr;
+}
+
+int station::cell_index(const vec2& p) const {
+  const int x = std::clamp(static_cast<int>(p.x() / settings_.cell_m), 0, grid_w_ - 1);
+  const int y = std::clamp(static_cast<int>(p.y() / settings_.cell_m), 0, grid_h_ - 1);
+  return y * grid_w_ + x;
+}
+
+void station::build_grid() {
+  grid_w_ = static_cast<int>(std::ceil(plan_.size_m.x() / settings_.cell_m));
+  grid_h_ = static_cast<int>(std::ceil(plan_.size_m.y() / settings_.cell_m));
+  blocked_.assign(static_cast<std::size_t>(grid_w_ * grid_h_), 1);
+  near_wall_.assign(blocked_.size(), 0);
+  for (int y = 0; y < grid_h_; ++y) {
+    for (int x = 0; x < grid_w_; ++x) {
+      const vec2 centre{(x + 0.5) * settings_.cell_m, (y + 0.5) * settings_.cell_m};
+      const double clearance = wall_clearance(centre);
+      const auto c = static_cast<std::size_t>(y * grid_w_ + x);
+      blocked_[c] = !walkable(centre) || clearance < settings_.clearance_m;
+      near_wall_[c] = clearance < settings_.wall_band_m;
+    }
+  }
+}
+
+std::vector<float> station::dijkstra(const std::vector<int>& sources) const {
+  std::vector<float> distance(blocked_.size(), unreachable);
+  using entry = std::pair<float, int>;
+  std::priority_queue<entry, std::vector<entry>, std::greater<>> open;
+  for (const int s : sources) {
+    distance[s] = 0.0f;
+    open.push({0.0f, s});
+  }
+  const float cell = static_cast<float>(settings_.cell_m);
+  const float diagonal = cell * std::sqrt(2.0f);
+  const float penalty = static_cast<float>(settings_.wall_penalty);
+  while (!open.empty()) {
+    const auto [d, c] = open.top();
+    open.pop();
+    if (d > distance[c]) continue;
+    const int cx = c % grid_w_;
+    const int cy = c / grid_w_;
+    for (int dy = -1; dy <= 1; ++dy) {
+      for (int dx = -1; dx <= 1; ++dx) {
+        if (dx == 0 && dy == 0) continue;
+        const int nx = cx + dx;
+        const int ny = cy + dy;
+        if (nx < 0 || ny < 0 || nx >= grid_w_ || ny >= grid_h_) continue;
+        const int n = ny * grid_w_ + nx;
+        if (blocked_[n]) continue;
+        // No corner cutting: a diagonal step needs both side cells free.
+        if (dx != 0 && dy != 0 &&
+            (blocked_[cy * grid_w_ + nx] || blocked_[ny * grid_w_ + cx])) {
+          continue;
+        }
+        const float step = (dx != 0 && dy != 0 ? diagonal : cell) * (near_wall_[n] ? 1.0f + penalty : 1.0f);
+        if (d + step < distance[n]) {
+          distance[n] = d + step;
+          open.push({distance[n], n});
+        }
+      }
+    }
+  }
+  return distance;
+}
+
+void station::build_fields() {
+  auto nearest_free = [&](const vec2& p) {
+    const int c = cell_index(p);
+    if (!blocked_[c]) return c;
+    const int cx = c % grid_w_;
+    const int cy = c / grid_w_;
+    int best = -1;
+    double best_distance = std::numeric_limits<double>::infinity();
+    for (int r = 1; r <= 8 && best < 0; ++r) {
+      for (int y = std::max(0, cy - r); y <= std::min(grid_h_ - 1, cy + r); ++y) {
+        for (int x = std::max(0, cx - r); x <= std::min(grid_w_ - 1, cx + r); ++x) {
+          if (blocked_[y * grid_w_ + x]) continue;
+          const vec2 centre{(x + 0.5) * settings_.cell_m, (y + 0.5) * settings_.cell_m};
+          const double d = (centre - p).norm();
+          if (d < best_distance) {
+            best_distance = d;
+            best = y * grid_w_ + x;
+          }
+        }
+      }
+    }
+    return best;
+  };
+  auto box_cells = [&](const box& b) {
+    std::vector<int> cells;
+    for (int y = 0; y < grid_h_; ++y) {
+      for (int x = 0; x < grid_w_; ++x) {
+        const vec2 centre{(x + 0.5) * settings_.cell_m, (y + 0.5) * settings_.cell_m};
+        if (b.contains(centre) && !blocked_[y * grid_w_ + x]) cells.push_back(y * grid_w_ + x);
+      }
+    }
+    if (cells.empty()) {
+      if (const int c = nearest_free(b.center()); c >= 0) cells.push_back(c);
+    }
+    return cells;
+  };
+  std::vector<std::pair<std::string, std::vector<int>>> targets;
+  field_base_.assign(5, 0);
+  field_base_[0] = 0;
+  for (const auto& p : plan_.portals) targets.push_back({p.name, box_cells(p.area)});
+  field_base_[1] = static_cast<int>(targets.size());
+  for (const auto& s : plan_.stairways) targets.push_back({s.name, box_cells(s.area)});
+  field_base_[2] = static_cast<int>(targets.size());
+  for (const auto* c : counters_) {
+    const int cell = nearest_free(c->service_point);
+    targets.push_back({c->name, cell >= 0 ? std::vector<int>{cell} : std::vector<int>{}});
+  }
+  field_base_[3] = static_cast<int>(targets.size());
+  for (std::size_t b = 0; b < plan_.benches.size(); ++b) {
+    std::vector<int> cells;
+    for (const auto& s : seats_) {
+      if (s.bench != static_cast<int>(b)) continue;
+      if (const int c = nearest_free(s.position); c >= 0) cells.push_back(c);
+    }
+    targets.push_back({plan_.benches[b].name, cells});
+  }
+  field_base_[4] = static_cast<int>(targets.size());
+  for (const auto& m : plan_.meeting_points) {
+    const int cell = nearest_free(m.position);
+    targets.push_back({m.name, cell >= 0 ? std::vector<int>{cell} : std::vector<int>{}});
+  }
+  const auto free_cells = std::count(blocked_.begin(), blocked_.end(), std::uint8_t{0});
+  for (const auto& [name, sources] : targets) {
+    if (sources.empty()) {
+      throw std::invalid_argument(fmt::format(
+          "{}: '{}' lies on no walkable floor (navigation grid)", plan_.source_path, name));
+    }
+    fields_.push_back(dijkstra(sources));
+    const auto& field = fields_.back();
+    const auto reached = std::count_if(field.begin(), field.end(), [](float d) { return d < unreachable; });
+    // A target cut off from most of the floor means a wall closes a portal by mistake.
+    if (reached * 2 < free_cells) {
+      throw std::invalid_argument(fmt::format(
+          "{}: '{}' is reachable from only {} of {} walkable navigation cells",
+          plan_.source_path, name, reached, free_cells));
+    }
+  }
+}
+
+int station::target(target_kind kind, std::size_t index) const {
+  return field_base_[static_cast<int>(kind)] + static_cast<int>(index);
+}
+
+float station::field_at(int field, int cx, int cy) const {
+  if (cx < 0 || cy < 0 || cx >= grid_w_ || cy >= grid_h_) return unreachable;
+  return fields_[field][cy * grid_w_ + cx];
+}
+
+double station::distance_to(int field, const vec2& p) const {
+  const int c = cell_index(p);
+  const int cx = c % grid_w_;
+  const int cy = c / grid_w_;
+  double best = std::numeric_limits<double>::infinity();
+  for (int dy = -1; dy <= 1; ++dy) {
+    for (int dx = -1; dx <= 1; ++dx) {
+      const float v = field_at(field, cx + dx, cy + dy);
+      if (v == unreachable) continue;
+      const vec2 centre{(cx + dx + 0.5) * settings_.cell_m, (cy + dy + 0.5) * settings_.cell_m};
+      best = std::min(best, static_cast<double>(v) + (centre - p).norm());
+    }
+  }
+  return best;
+}
+
+vec2 station::direction_to(int field, const vec2& p) const {
+  const double cell = settings_.cell_m;
+  // Bilinear interpolation between the four surrounding cell centres gives a smooth route
+  // direction instead of the grid's eight compass directions.
+  const double gx = p.x() / cell - 0.5;
+  const double gy = p.y() / cell - 0.5;
+  const int x0 = static_cast<int>(std::floor(gx));
+  const int y0 = static_cast<int>(std::floor(gy));
+  const double tx = gx - x0;
+  const double ty = gy - y0;
+  const double f00 = field_at(field, x0, y0);
+  const double f10 = field_at(field, x0 + 1, y0);
+  const double f01 = field_at(field, x0, y0 + 1);
+  const double f11 = field_at(field, x0 + 1, y0 + 1);
+  if (std::isfinite(f00) && std::isfinite(f10) && std::isfinite(f01) && std::isfinite(f11)) {
+    const vec2 gradient{((f10 - f00) * (1.0 - ty) + (f11 - f01) * ty) / cell,
+                        ((f01 - f00) * (1.0 - tx) + (f11 - f10) * tx) / cell};
+    const double norm = gradient.norm();
+    if (norm > 0.3) return -gradient / norm;
+  }
+  // Near walls and at saddles: head for the best cell nearby.
+  const int c = cell_index(p);
+  const int cx = c % grid_w_;
+  const int cy = c / grid_w_;
+  for (int r = 1; r <= 3; ++r) {
+    double best = field_at(field, cx, cy);
+    vec2 best_centre = p;
+    for (int y = cy - r; y <= cy + r; ++y) {
+      for (int x = cx - r; x <= cx + r; ++x) {
+        const double v = field_at(field, x, y);
+        const vec2 centre{(x + 0.5) * cell, (y + 0.5) * cell};
+        if (v < best) {
+          best = v;
+          best_centre = centre;
+        }
+      }
+    }
+    const vec2 to = best_centre - p;
+    if (std::isfinite(best) && to.norm() > 1e-9) return to.normalized();
+    if (std::isfinite(best)) return vec2::Zero();
+  }
+  return vec2::Zero();
+}
+
+}  // namespace argus::world

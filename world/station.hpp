@@ -1,0 +1,139 @@
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "world/layout.hpp"
+
+namespace argus::world {
+
+/// A solid line segment pedestrians may not cross: a wall piece, an obstacle edge, a bench.
+struct segment {
+  vec2 a{0.0, 0.0};
+  vec2 b{0.0, 0.0};
+  /// The point of the segment closest to `p`.
+  vec2 closest_point(const vec2& p) const;
+};
+
+/// A seat on a bench.
+struct seat {
+  vec2 position{0.0, 0.0};
+  int bench = 0;
+};
+
+/// What a navigation target leads to; a pedestrian's route is the descent of the target's
+/// distance field.
+enum class target_kind { portal, stairs, counter, bench, meeting_point };
+
+/// Tunables of the navigation grid.
+struct navigation_settings {
+  /// Grid cell size: half a shoulder width resolves the station's portals (4-6 m wide) well.
+  double cell_m = 0.5;
+  /// Cells whose centre is closer than this to a wall are blocked.
+  double clearance_m = 0.2;
+  /// Extra cost per metre walked within `wall_band_m` of a wall, so routes keep off walls.
+  double wall_penalty = 0.6;
+  double wall_band_m = 0.8;
+};
+
+/// The immutable station: its layout plus everything derived from it once, shared by every
+/// crowd partition (read-only, so safe from any thread): solid segments with a uniform-grid
+/// index, seats, and one navigation distance field per target (portal, stairs, ticket booth
+/// or vending machine, bench, meeting point). The distance fields are the global path
+/// planner: Dijkstra from the target over an 8-connected grid, computed once, so planning a
+/// route costs a lookup (cf. Shao & Terzopoulos' precomputed path maps, paper ref. [1]).
+class station {
+ public:
+  /// Builds everything from `plan`; throws std::invalid_argument naming a target that no
+  /// walkable cell can reach.
+  explicit station(layout plan, navigation_settings settings = {});
+
+  /// load_layout + construct, shared for the partitions.
+  static std::shared_ptr<const station> load(const std::filesystem::path& file);
+
+  /// The layout this station was built from.
+  const layout& plan() const noexcept { return plan_; }
+
+  /// All solid segments.
+  const std::vector<segment>& segments() const noexcept { return segments_; }
+
+  /// Indices of the segments that may lie within `segment_reach_m` of `p` (a superset).
+  std::span<const std::uint32_t> segments_near(const vec2& p) const;
+
+  /// Segments within this distance of a point are always in `segments_near`.
+  static constexpr double segment_reach_m = 1.5;
+
+  /// Distance from `p` to the nearest solid segment within reach (`segment_reach_m` if none).
+  double wall_clearance(const vec2& p) const;
+
+  /// Whether `p` is inside a walkable region and not inside an obstacle or a footprint.
+  bool walkable(const vec2& p) const;
+
+  /// Whether a body of `radius_m` fits at `p`: walkable, off the navigation grid's blocked
+  /// cells and clear of every wall.
+  bool fits(const vec2& p, double radius_m) const;
+
+  /// Ticket booths then vending machines, numbered together as "counters".
+  std::size_t counter_count() const noexcept { return counters_.size(); }
+  /// Counter `index` (booths first).
+  const service_counter& counter(std::size_t index) const { return *counters_[index]; }
+  /// Whether counter `index` is a vending machine (else a ticket booth).
+  bool is_vending_machine(std::size_t index) const noexcept {
+    return index >= plan_.ticket_booths.size();
+  }
+
+  /// Every seat of every bench.
+  const std::vector<seat>& seats() const noexcept { return seats_; }
+
+  /// The distance field of target `kind`/`index`, for distance_to / direction_to.
+  int target(target_kind kind, std::size_t index) const;
+
+  /// Walking distance from `p` to target `field`, in metres (+inf where unreachable).
+  double distance_to(int field, const vec2& p) const;
+
+  /// Unit direction of steepest descent of target `field` at `p`: the way to walk. Zero at
+  /// the target.
+  vec2 direction_to(int field, const vec2& p) const;
+
+  /// The region containing `p` (the first listed), or nullptr.
+  const region* region_at(const vec2& p) const;
+
+  /// Navigation grid geometry (for drawing and tests).
+  int grid_width() const noexcept { return grid_w_; }
+  int grid_height() const noexcept { return grid_h_; }
+  double cell_m() const noexcept { return settings_.cell_m; }
+  bool blocked(int cx, int cy) const { return blocked_[cy * grid_w_ + cx] != 0; }
+
+ private:
+  int cell_index(const vec2& p) const;
+  float field_at(int field, int cx, int cy) const;
+  void build_segments();
+  void build_segment_index();
+  void build_grid();
+  void build_fields();
+  std::vector<float> dijkstra(const std::vector<int>& sources) const;
+
+  layout plan_;
+  navigation_settings settings_;
+  std::vector<segment> segments_;
+  std::vector<const service_counter*> counters_;
+  std::vector<seat> seats_;
+  // Segment index: uniform grid of `index_cell_m` cells, CSR layout.
+  static constexpr double index_cell_m = 1.0;
+  int index_w_ = 0;
+  int index_h_ = 0;
+  std::vector<std::uint32_t> index_start_;
+  std::vector<std::uint32_t> index_items_;
+  // Navigation grid.
+  int grid_w_ = 0;
+  int grid_h_ = 0;
+  std::vector<std::uint8_t> blocked_;
+  std::vector<std::uint8_t> near_wall_;
+  std::vector<std::vector<float>> fields_;
+  std::vector<int> field_base_;  // first field of each target_kind
+};
+
+}  // namespace argus::world
