@@ -1,0 +1,542 @@
+#include "world/behaviour.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+
+#include "config/derive_seed.hpp"
+#include "world/snapshot.hpp"
+#include "world/station.hpp"
+
+namespace argus::world {
+
+std::string_view to_string(activity a) noexcept {
+  switch (a) {
+    case activity::walking: return "walking";
+    case activity::queueing: return "queueing";
+    case activity::buying_ticket: return "buying_ticket";
+    case activity::using_vending_machine: return "using_vending_machine";
+    case activity::sitting: return "sitting";
+    case activity::meeting: return "meeting";
+    case activity::leaving: return "leaving";
+  }
+  return "?";
+}
+
+std::string_view to_string(goal_kind g) noexcept {
+  switch (g) {
+    case goal_kind::buy_ticket: return "buy_ticket";
+    case goal_kind::rest_on_bench: return "rest_on_bench";
+    case goal_kind::use_vending_machine: return "use_vending_machine";
+    case goal_kind::meet_in_waiting_room: return "meet_in_waiting_room";
+    case goal_kind::go_to_platform: return "go_to_platform";
+    case goal_kind::leave_station: return "leave_station";
+  }
+  return "?";
+}
+
+std::string_view to_string(event_kind kind) noexcept {
+  switch (kind) {
+    case event_kind::spawned: return "spawned";
+    case event_kind::left: return "left";
+    case event_kind::goal_started: return "goal_started";
+    case event_kind::goal_completed: return "goal_completed";
+    case event_kind::goal_abandoned: return "goal_abandoned";
+    case event_kind::joined_queue: return "joined_queue";
+    case event_kind::service_started: return "service_started";
+    case event_kind::service_finished: return "service_finished";
+    case event_kind::sat_down: return "sat_down";
+    case event_kind::stood_up: return "stood_up";
+  }
+  return "?";
+}
+
+namespace {
+
+/// Stream tag that separates pedestrian RNGs from other actors' (camera ids are small too).
+constexpr std::uint64_t pedestrian_stream = 0x7065646573747269ULL;  // "pedestri"
+
+// Palettes. Near-twins on purpose (crimson/red, navy/dark blue, two greys): the trackers
+// must sometimes confuse pedestrians (Section III-B).
+constexpr std::array<rgb8, 16> shirts{{{200, 30, 40},   {176, 24, 36},  {30, 60, 150},
+                                       {24, 48, 128},   {40, 140, 60},  {240, 240, 235},
+                                       {230, 200, 40},  {120, 120, 125}, {105, 105, 110},
+                                       {250, 130, 30},  {130, 60, 150}, {20, 20, 22},
+                                       {90, 170, 210},  {220, 120, 160}, {110, 80, 50},
+                                       {60, 110, 100}}};
+constexpr std::array<rgb8, 8> trousers{{{30, 35, 60},   {25, 30, 52},  {20, 20, 22},
+                                        {90, 90, 95},   {150, 130, 100}, {60, 80, 130},
+                                        {80, 60, 40},   {200, 190, 170}}};
+constexpr std::array<rgb8, 6> skins{{{255, 220, 190}, {240, 195, 160}, {205, 150, 110},
+                                     {170, 115, 80},  {120, 80, 55},   {85, 55, 40}}};
+constexpr std::array<rgb8, 6> hairs{{{20, 15, 10},  {60, 40, 25},   {110, 75, 40},
+                                     {200, 170, 110}, {150, 60, 30}, {170, 170, 170}}};
+
+template <class T, std::size_t N>
+T pick(rng& random, const std::array<T, N>& from) {
+  return from[random.below(static_cast<std::uint32_t>(N))];
+}
+
+}  // namespace
+
+appearance draw_appearance(rng& random) {
+  appearance look;
+  look.shirt = pick(random, shirts);
+  look.trousers = pick(random, trousers);
+  look.skin = pick(random, skins);
+  look.hair = pick(random, hairs);
+  look.height_m = random.uniform(1.52, 1.95);
+  look.girth_m = random.uniform(0.40, 0.54);
+  return look;
+}
+
+pedestrian make_pedestrian(int id, std::uint64_t run_seed, const vec2& position, int entry_portal,
+                           bool from_platform) {
+  pedestrian p;
+  p.random = rng(config::derive_seed(config::derive_seed(run_seed, pedestrian_stream),
+                                     static_cast<std::uint64_t>(id)));
+  p.state.id = id;
+  p.state.position = position;
+  p.state.look = draw_appearance(p.random);
+  p.preferred_speed_mps = p.random.uniform(1.0, 1.5);
+  p.state.heading_rad = p.random.uniform(-M_PI, M_PI);
+  p.entry_portal = entry_portal;
+  // The agenda: errands in the station, then the platform or the street.
+  auto add = [&](goal_kind g) { p.agenda[p.agenda_size++] = g; };
+  if (from_platform) {
+    // Arriving passengers: a snack or a meeting, then out to the street.
+    if (p.random.chance(0.3)) add(goal_kind::use_vending_machine);
+    if (p.random.chance(0.3)) add(goal_kind::meet_in_waiting_room);
+    add(p.random.chance(0.9) ? goal_kind::leave_station : goal_kind::go_to_platform);
+  } else {
+    if (p.random.chance(0.55)) add(goal_kind::buy_ticket);
+    std::array<goal_kind, 3> errands{goal_kind::rest_on_bench, goal_kind::use_vending_machine,
+                                     goal_kind::meet_in_waiting_room};
+    constexpr std::array<double, 3> odds{0.3, 0.3, 0.25};
+    // Random order of the optional errands (Fisher-Yates with the pedestrian's own RNG).
+    for (std::size_t i = errands.size() - 1; i > 0; --i) {
+      std::swap(errands[i], errands[p.random.below(static_cast<std::uint32_t>(i + 1))]);
+    }
+    for (const auto g : errands) {
+      if (p.random.chance(odds[static_cast<std::size_t>(g) - 1])) add(g);
+    }
+    add(p.random.chance(0.85) ? goal_kind::go_to_platform : goal_kind::leave_station);
+  }
+  p.state.goal = p.agenda[0];
+  return p;
+}
+
+namespace {
+
+/// One pedestrian's tick; a small object so the state machine reads as named steps.
+class stepper {
+ public:
+  stepper(const station& where, const snapshot& previous, pedestrian& self,
+          const behaviour_settings& settings, std::vector<event>& events)
+      : where_(where),
+        previous_(previous),
+        self_(self),
+        s_(self.state),
+        settings_(settings),
+        events_(events),
+        tick_(previous.tick() + 1) {
+    // nop
+  }
+
+  /// Returns false when the pedestrian left the station.
+  bool run() {
+    if (self_.field < 0) begin_goal(self_.agenda[self_.agenda_next]);
+    if (!decide()) return false;
+    move();
+    watch_progress();
+    return true;
+  }
+
+ private:
+  void emit(event_kind kind, int resource = -1) {
+    events_.push_back({tick_, s_.id, kind, s_.goal, resource});
+  }
+
+  bool is_final(goal_kind g) const {
+    return g == goal_kind::go_to_platform || g == goal_kind::leave_station;
+  }
+
+  void begin_goal(goal_kind g) {
+    s_.goal = g;
+    ++s_.goal_serial;
+    s_.doing = is_final(g) ? activity::leaving : activity::walking;
+    self_.has_point = false;
+    self_.stalled_s = 0.0;
+    self_.best_distance_m = std::numeric_limits<double>::infinity();
+    emit(event_kind::goal_started);
+    bool ok = true;
+    switch (g) {
+      case goal_kind::buy_ticket: ok = choose_counter(false); break;
+      case goal_kind::use_vending_machine: ok = choose_counter(true); break;
+      case goal_kind::rest_on_bench: ok = choose_seat(); break;
+      case goal_kind::meet_in_waiting_room: ok = choose_meeting_point(); break;
+      case goal_kind::go_to_platform: ok = choose_stairs(); break;
+      case goal_kind::leave_station: ok = choose_exit(); break;
+    }
+    if (!ok) {
+      abandon_goal();
+      return;
+    }
+    s_.distance_to_goal_m = goal_distance();
+  }
+
+  void next_goal() {
+    if (self_.agenda_next + 1 < self_.agenda_size) ++self_.agenda_next;
+    begin_goal(self_.agenda[self_.agenda_next]);
+  }
+
+  void complete_goal() {
+    emit(event_kind::goal_completed);
+    next_goal();
+  }
+
+  /// Gives the current goal up; a final goal is retried with another target.
+  void abandon_goal() {
+    emit(event_kind::goal_abandoned);
+    s_.seat = -1;
+    s_.counter = -1;
+    if (is_final(s_.goal)) {
+      // A last goal cannot be skipped: try the other kind of way out.
+      const auto other = s_.goal == goal_kind::go_to_platform ? goal_kind::leave_station
+                                                               : goal_kind::go_to_platform;
+      self_.agenda[self_.agenda_next] = other;
+      begin_goal(other);
+      return;
+    }
+    next_goal();
+  }
+
+  bool choose_counter(bool vending) {
+    int best = -1;
+    double best_cost = std::numeric_limits<double>::infinity();
+    for (std::size_t q = 0; q < where_.counter_count(); ++q) {
+      if (where_.is_vending_machine(q) != vending) continue;
+      const auto& c = where_.counter(q);
+      const auto length = previous_.queue_length(static_cast<int>(q));
+      if (length >= c.max_queue_length) continue;
+      // Shortest expected wait plus walk: a person in line costs about a service time.
+      const double cost = where_.distance_to(where_.target(target_kind::counter, q), s_.position) /
+                              self_.preferred_speed_mps +
+                          static_cast<double>(length) * (c.min_service_s + c.max_service_s) / 2.0;
+      if (cost < best_cost) {
+        best_cost = cost;
+        best = static_cast<int>(q);
+      }
+    }
+    if (best < 0) return false;
+    self_.target_index = best;
+    self_.field = where_.target(target_kind::counter, static_cast<std::size_t>(best));
+    const auto& c = where_.counter(static_cast<std::size_t>(best));
+    self_.point = c.service_point + c.queue_direction * c.queue_spacing_m *
+                                        static_cast<double>(previous_.queue_length(best));
+    self_.has_point = true;
+    return true;
+  }
+
+  bool choose_seat() {
+    int best = -1;
+    double best_distance = std::numeric_limits<double>::infinity();
+    const auto& seats = where_.seats();
+    for (std::size_t i = 0; i < seats.size(); ++i) {
+      if (previous_.seat_holder(static_cast<int>(i)) >= 0) continue;
+      const double d = (seats[i].position - s_.position).norm();
+      if (d < best_distance) {
+        best_distance = d;
+        best = static_cast<int>(i);
+      }
+    }
+    if (best < 0) return false;
+    s_.seat = best;
+    self_.target_index = best;
+    self_.field = where_.target(target_kind::bench, static_cast<std::size_t>(seats[best].bench));
+    self_.point = seats[best].position;
+    self_.has_point = true;
+    return true;
+  }
+
+  bool choose_meeting_point() {
+    const auto& points = where_.plan().meeting_points;
+    if (points.empty()) return false;
+    const auto index = self_.random.below(static_cast<std::uint32_t>(points.size()));
+    const auto& m = points[index];
+    self_.point = m.position;
+    for (int attempt = 0; attempt < 5; ++attempt) {
+      const double angle = self_.random.uniform(0.0, 2.0 * M_PI);
+      const double r = m.radius_m * std::sqrt(self_.random.uniform());
+      const vec2 spot = m.position + r * vec2{std::cos(angle), std::sin(angle)};
+      if (where_.fits(spot, 0.35)) {
+        self_.point = spot;
+        break;
+      }
+    }
+    self_.has_point = true;
+    self_.target_index = static_cast<int>(index);
+    self_.field = where_.target(target_kind::meeting_point, index);
+    self_.timer_s = self_.random.uniform(20.0, 90.0);
+    return true;
+  }
+
+  bool choose_stairs() {
+    const auto& stairs = where_.plan().stairways;
+    if (stairs.empty()) return false;
+    const auto index = self_.random.below(static_cast<std::uint32_t>(stairs.size()));
+    self_.target_index = static_cast<int>(index);
+    self_.field = where_.target(target_kind::stairs, index);
+    return true;
+  }
+
+  bool choose_exit() {
+    std::vector<std::size_t> streets;
+    const auto& portals = where_.plan().portals;
+    for (std::size_t i = 0; i < portals.size(); ++i) {
+      if (portals[i].kind == portal_kind::street && static_cast<int>(i) != self_.entry_portal) {
+        streets.push_back(i);
+      }
+    }
+    if (streets.empty() && self_.entry_portal >= 0) streets.push_back(self_.entry_portal);
+    if (streets.empty()) return false;
+    const auto index = streets[self_.random.below(static_cast<std::uint32_t>(streets.size()))];
+    self_.target_index = static_cast<int>(index);
+    self_.field = where_.target(target_kind::portal, index);
+    return true;
+  }
+
+  double goal_distance() const {
+    if (self_.has_point) {
+      const double straight = (self_.point - s_.position).norm();
+      if (straight < settings_.direct_steering_m) return straight;
+    }
+    return where_.distance_to(self_.field, s_.position);
+  }
+
+  /// The behaviour state machine; false when the pedestrian left.
+  bool decide() {
+    const double dt = settings_.tick_s;
+    switch (s_.doing) {
+      case activity::walking:
+      case activity::leaving: return arrive();
+      case activity::queueing: {
+        const auto& c = where_.counter(static_cast<std::size_t>(s_.counter));
+        const auto rank = previous_.queue_rank(s_.counter, s_.queue_join_tick, s_.id);
+        self_.point = c.service_point + c.queue_direction * c.queue_spacing_m * static_cast<double>(rank);
+        if (rank == 0 && (s_.position - c.service_point).norm() < 0.25) {
+          s_.doing = where_.is_vending_machine(static_cast<std::size_t>(s_.counter))
+                         ? activity::using_vending_machine
+                         : activity::buying_ticket;
+          self_.timer_s = self_.random.uniform(c.min_service_s, c.max_service_s);
+          emit(event_kind::service_started, s_.counter);
+        }
+        return true;
+      }
+      case activity::buying_ticket:
+      case activity::using_vending_machine:
+        self_.timer_s -= dt;
+        if (self_.timer_s <= 0.0) {
+          emit(event_kind::service_finished, s_.counter);
+          s_.counter = -1;
+          complete_goal();
+        }
+        return true;
+      case activity::sitting:
+        self_.timer_s -= dt;
+        if (self_.timer_s <= 0.0) {
+          emit(event_kind::stood_up, s_.seat);
+          s_.seat = -1;
+          complete_goal();
+        }
+        return true;
+      case activity::meeting:
+        self_.timer_s -= dt;
+        if (self_.timer_s <= 0.0) complete_goal();
+        return true;
+    }
+    return true;
+  }
+
+  /// Walking states: has the pedestrian reached what it walks to?
+  bool arrive() {
+    const double to_point = (self_.point - s_.position).norm();
+    switch (s_.goal) {
+      case goal_kind::buy_ticket:
+      case goal_kind::use_vending_machine: {
+        const auto& c = where_.counter(static_cast<std::size_t>(self_.target_index));
+        // Join the line on coming near it; from then on the snapshot ranks the line.
+        if ((s_.position - c.service_point).norm() < 10.0 &&
+            where_.distance_to(self_.field, s_.position) < 14.0) {
+          if (previous_.queue_length(self_.target_index) >= c.max_queue_length) {
+            abandon_goal();
+            return true;
+          }
+          s_.counter = self_.target_index;
+          s_.queue_join_tick = tick_;
+          s_.doing = activity::queueing;
+          emit(event_kind::joined_queue, s_.counter);
+          const auto rank = previous_.queue_rank(s_.counter, tick_, s_.id);
+          self_.point = c.service_point + c.queue_direction * c.queue_spacing_m * static_cast<double>(rank);
+        }
+        return true;
+      }
+      case goal_kind::rest_on_bench: {
+        const int holder = previous_.seat_holder(s_.seat);
+        if (holder >= 0 && holder != s_.id) {
+          // Someone with a lower id claimed the same seat in the same tick: pick another.
+          s_.seat = -1;
+          if (!choose_seat()) abandon_goal();
+          return true;
+        }
+        if (to_point < 0.2) {
+          s_.doing = activity::sitting;
+          s_.velocity = vec2::Zero();
+          self_.timer_s = self_.random.uniform(30.0, 120.0);
+          emit(event_kind::sat_down, s_.seat);
+        }
+        return true;
+      }
+      case goal_kind::meet_in_waiting_room:
+        if (to_point < 0.5) s_.doing = activity::meeting;
+        return true;
+      case goal_kind::go_to_platform:
+        if (where_.plan().stairways[static_cast<std::size_t>(self_.target_index)].area.contains(
+                s_.position)) {
+          emit(event_kind::goal_completed);
+          emit(event_kind::left, -1 - self_.target_index);
+          return false;
+        }
+        return true;
+      case goal_kind::leave_station:
+        if (where_.plan().portals[static_cast<std::size_t>(self_.target_index)].area.contains(
+                s_.position)) {
+          emit(event_kind::goal_completed);
+          emit(event_kind::left, self_.target_index);
+          return false;
+        }
+        return true;
+    }
+    return true;
+  }
+
+  struct half_plane {
+    vec2 normal;
+    double limit;
+  };
+
+  /// Social force plus constraints, integrated over one tick (semi-implicit Euler).
+  void move() {
+    const double dt = settings_.tick_s;
+    if (s_.doing == activity::sitting || s_.doing == activity::buying_ticket ||
+        s_.doing == activity::using_vending_machine) {
+      // Being served or seated: planted. v = 0 satisfies everyone's constraints.
+      s_.velocity = vec2::Zero();
+      return;
+    }
+    const double v0 = self_.preferred_speed_mps;
+    vec2 desired = vec2::Zero();
+    const double to_point = self_.has_point ? (self_.point - s_.position).norm() : 1e9;
+    if (to_point < settings_.direct_steering_m) {
+      // Arrival: slow down over the last metre.
+      if (to_point > 0.03) desired = (self_.point - s_.position) / to_point * v0 * std::min(1.0, to_point);
+    } else {
+      desired = where_.direction_to(self_.field, s_.position) * v0;
+    }
+    const vec2 heading = s_.velocity.norm() > 0.05 ? vec2(s_.velocity.normalized()) : desired.normalized();
+    vec2 acceleration = (desired - s_.velocity) / settings_.relaxation_s;
+    std::array<half_plane, 48> planes;
+    std::size_t plane_count = 0;
+    const double radius = s_.radius_m();
+    const bool in_line = s_.counter >= 0 && s_.doing == activity::queueing;
+    previous_.for_each_near(s_.position, [&](const pedestrian_state& other) {
+      if (other.id == s_.id) return;
+      const vec2 offset = other.position - s_.position;
+      const double distance = offset.norm();
+      if (distance > snapshot::neighbour_cell_m || distance < 1e-9) return;
+      const vec2 n = offset / distance;
+      const double gap = distance - radius - other.radius_m();
+      // People in the same line stand close on purpose; only the constraint keeps them apart.
+      const bool same_line = in_line && other.counter == s_.counter;
+      if (!same_line) {
+        const double cos_phi = heading.dot(n);
+        const double weight = settings_.anisotropy + (1.0 - settings_.anisotropy) * (1.0 + cos_phi) / 2.0;
+        acceleration -= n * (settings_.social_strength * weight * std::exp(-gap / settings_.social_range_m));
+      }
+      if (gap < 0.6 && plane_count < planes.size()) {
+        planes[plane_count++] = {n, std::max(gap - 0.01, 0.0) / (2.0 * dt)};
+      }
+    });
+    for (const auto index : where_.segments_near(s_.position)) {
+      const vec2 closest = where_.segments()[index].closest_point(s_.position);
+      const vec2 offset = closest - s_.position;
+      const double distance = offset.norm();
+      if (distance > station::segment_reach_m || distance < 1e-9) continue;
+      const vec2 n = offset / distance;
+      const double gap = distance - radius;
+      acceleration -= n * (settings_.wall_strength * std::exp(-gap / settings_.wall_range_m));
+      if (gap < 0.6 && plane_count < planes.size()) {
+        planes[plane_count++] = {n, std::max(gap - 0.01, 0.0) / dt};
+      }
+    }
+    vec2 velocity = s_.velocity + acceleration * dt;
+    const double max_speed = 1.4 * v0;
+    if (velocity.norm() > max_speed) velocity *= max_speed / velocity.norm();
+    // Slide along the constraints first (keeps people moving past each other) ...
+    for (int pass = 0; pass < 3; ++pass) {
+      for (std::size_t k = 0; k < plane_count; ++k) {
+        const double excess = velocity.dot(planes[k].normal) - planes[k].limit;
+        if (excess > 0.0) velocity -= excess * planes[k].normal;
+      }
+    }
+    // ... then scale down until every half-plane holds (each contains v = 0).
+    double scale = 1.0;
+    for (std::size_t k = 0; k < plane_count; ++k) {
+      const double along = velocity.dot(planes[k].normal);
+      if (along > planes[k].limit) scale = std::min(scale, planes[k].limit / along);
+    }
+    velocity *= std::max(scale, 0.0);
+    s_.velocity = velocity;
+    s_.position += velocity * dt;
+    if (velocity.norm() > 0.1) s_.heading_rad = std::atan2(velocity.y(), velocity.x());
+  }
+
+  /// Watchdog: no progress for give_up_s means the route is blocked; choose again.
+  void watch_progress() {
+    s_.distance_to_goal_m = goal_distance();
+    if (is_waiting(s_.doing)) {
+      self_.stalled_s = 0.0;
+      self_.best_distance_m = s_.distance_to_goal_m;
+      return;
+    }
+    if (s_.distance_to_goal_m < self_.best_distance_m - settings_.progress_m) {
+      self_.best_distance_m = s_.distance_to_goal_m;
+      self_.stalled_s = 0.0;
+      return;
+    }
+    self_.stalled_s += settings_.tick_s;
+    if (self_.stalled_s > settings_.give_up_s) abandon_goal();
+  }
+
+  const station& where_;
+  const snapshot& previous_;
+  pedestrian& self_;
+  pedestrian_state& s_;
+  const behaviour_settings& settings_;
+  std::vector<event>& events_;
+  std::uint64_t tick_;
+};
+
+}  // namespace
+
+std::optional<pedestrian> step_pedestrian(const station& where, const snapshot& previous,
+                                          const pedestrian& current,
+                                          const behaviour_settings& settings,
+                                          std::vector<event>& events) {
+  pedestrian next = current;
+  if (!stepper(where, previous, next, settings, events).run()) return std::nullopt;
+  return next;
+}
+
+}  // namespace argus::world
