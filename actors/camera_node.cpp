@@ -1,34 +1,80 @@
 #include "actors/camera_node.hpp"
 
+#include "actors/ordered_inbox.hpp"
 #include "actors/participant_ids.hpp"
 #include "actors/tick_context.hpp"
 #include "actors/type_ids.hpp"
 #include "fmt/format.h"
+#include "protocol/node_network.hpp"
 
 namespace argus::actors {
 namespace {
 
-struct camera_node_state {
-  participant_info info;
-  config::camera_settings camera;
-  bool announced = false;
+struct arrival {
+  int from = 0;
+  protocol::net_message message;
 };
 
+struct camera_node_state {
+  participant_info info;
+  int camera_id = 0;
+  bool ptz = true;
+  bool announced = false;
+  link_directory links;
+  std::unique_ptr<protocol::node_network> network;
+  ordered_inbox<arrival> arrivals;
+  std::uint64_t mail_seq = 0;
+};
+
+std::vector<int> neighbours_of(const link_directory& links) {
+  std::vector<int> out;
+  for (const auto& [n, l] : links) out.push_back(n);
+  return out;
+}
+
+void flush_network(caf::stateful_actor<camera_node_state>* self, tick_context& ctx) {
+  auto& st = self->state;
+  for (auto& out : st.network->take_outgoing()) {
+    auto it = st.links.find(out.neighbour);
+    if (it == st.links.end()) continue;
+    mail_stamp stamp{ctx.tick(), static_cast<std::uint8_t>(phase::cameras), st.info.id,
+                     st.mail_seq++};
+    self->send(it->second.handle, net_send_atom_v, stamp, st.camera_id, std::move(out.message));
+    ctx.sent_mail_to(it->second.participant);
+  }
+  for (const auto& change : st.network->take_changes())
+    ctx.emit(change.up ? "neighbour_up" : "neighbour_lost",
+             fmt::format(R"("camera":{},"neighbour":{})", st.camera_id, change.neighbour));
+  for (const auto& m : st.network->take_delivered())
+    ctx.emit("net_received", fmt::format(R"("camera":{},"origin":{},"message":"{}","hops":{})",
+                                         st.camera_id, m.origin, m.kind, m.hops));
+}
+
 caf::behavior camera_node(caf::stateful_actor<camera_node_state>* self,
-                          config::camera_settings camera) {
+                          const config::scenario& scenario, config::camera_settings camera,
+                          link_directory links) {
   auto& st = self->state;
   st.info = camera_participant(camera);
-  st.camera = std::move(camera);
+  st.camera_id = camera.id;
+  st.ptz = camera.type == config::camera_type::ptz;
+  st.network = std::make_unique<protocol::node_network>(camera.id, neighbours_of(links), scenario);
+  st.links = std::move(links);
   return {
-      [self](tick_atom, std::int64_t tick, std::uint8_t) {
+      [self](net_deliver_atom, const mail_stamp& stamp, int from, protocol::net_message& m) {
+        self->state.arrivals.put(stamp, arrival{from, std::move(m)});
+      },
+      [self](tick_atom, std::int64_t tick, std::uint8_t p) {
         auto& st = self->state;
         tick_context ctx(st.info.id, st.info.name, tick, st.info.tick_phase);
         if (!st.announced) {
           st.announced = true;
-          ctx.emit("node_up",
-                   fmt::format(R"("camera":{},"type":"{}")", st.camera.id,
-                               st.camera.type == config::camera_type::ptz ? "ptz" : "static"));
+          ctx.emit("node_up", fmt::format(R"("camera":{},"type":"{}")", st.camera_id,
+                                          st.ptz ? "ptz" : "static"));
         }
+        for (auto& [stamp, a] : st.arrivals.take_due(tick, p))
+          st.network->receive(tick, a.from, a.message);
+        st.network->tick(tick);
+        flush_network(self, ctx);
         self->send(caf::actor_cast<caf::actor>(self->current_sender()), std::move(ctx).finish());
       },
   };
@@ -41,8 +87,9 @@ participant_info camera_participant(const config::camera_settings& camera) {
           wake_mode::every_tick};
 }
 
-caf::actor spawn_camera_node(caf::actor_system& system, const config::camera_settings& camera) {
-  return system.spawn(camera_node, camera);
+caf::actor spawn_camera_node(caf::actor_system& system, const config::scenario& scenario,
+                             const config::camera_settings& camera, link_directory links) {
+  return system.spawn(camera_node, scenario, camera, std::move(links));
 }
 
 }  // namespace argus::actors

@@ -1,10 +1,24 @@
 #pragma once
 
+#include <cstdint>
+#include <map>
+
 #include "actors/participant_info.hpp"
+#include "caf/actor.hpp"
 #include "caf/fwd.hpp"
 #include "config/scenario.hpp"
 
 namespace argus::actors {
+
+/// The link actor to one neighbour, as a camera node knows it: nothing about where the
+/// neighbour is, only which link leads to it.
+struct attached_link {
+  std::uint64_t participant = 0;
+  caf::actor handle;
+};
+
+/// A camera node's links, by the neighbour's camera id.
+using link_directory = std::map<int, attached_link>;
 
 /// How camera `camera` takes part in the clock: phase cameras, every tick (it senses each frame).
 participant_info camera_participant(const config::camera_settings& camera);
@@ -13,9 +27,12 @@ participant_info camera_participant(const config::camera_settings& camera);
 /// `camera_participant(camera)`, before the clock starts or from inside a tick, so that joins
 /// stay deterministic.
 ///
-/// Today the node is the shell that later issues fill: it announces itself (`node_up`) on its
-/// first tick and acknowledges every tick; sensing (vision/), the controller FSM of Fig. 10
-/// and the grouping protocol (protocol/) are not in it yet.
-caf::actor spawn_camera_node(caf::actor_system& system, const config::camera_settings& camera);
+/// Today the node announces itself (`node_up`) on its first tick and runs its network side
+/// (`protocol::node_network`): hello beacons, neighbour discovery (`neighbour_up`,
+/// `neighbour_lost` events) and multi-hop forwarding. Mail: `(net_deliver_atom, mail_stamp,
+/// int from_node, net_message)` from its links. Sensing (vision/), the controller FSM of
+/// Fig. 10 and the grouping protocol are not in it yet.
+caf::actor spawn_camera_node(caf::actor_system& system, const config::scenario& scenario,
+                             const config::camera_settings& camera, link_directory links);
 
 }  // namespace argus::actors

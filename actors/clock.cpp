@@ -281,13 +281,32 @@ class clock_actor : public caf::event_based_actor {
   void finish() {
     finished_ = true;
     report_progress(true);
-    run_result result;
-    result.ticks = tick_;
-    result.virtual_seconds = static_cast<double>(tick_) * settings_.tick_seconds;
-    result.wall_seconds = wall_seconds(clock().now());
-    result.participants = joined_;
-    result.unexpected_down = unexpected_down_;
-    request(recorder_, caf::infinite, done_atom_v, std::move(result))
+    result_.ticks = tick_;
+    result_.virtual_seconds = static_cast<double>(tick_) * settings_.tick_seconds;
+    result_.wall_seconds = wall_seconds(clock().now());
+    result_.participants = joined_;
+    result_.unexpected_down = unexpected_down_;
+    // Participants that account for something (links) report before the recorder closes.
+    for (auto& [id, e] : participants_) {
+      if (!e.info.reports_at_end) continue;
+      ++reports_pending_;
+      request(e.handle, caf::infinite, report_atom_v)
+          .then(
+              [this](link_report& r) {
+                result_.links[r.link] = std::move(r.counts);
+                report_received();
+              },
+              [this](caf::error&) { report_received(); });
+    }
+    if (reports_pending_ == 0) close_recorder();
+  }
+
+  void report_received() {
+    if (--reports_pending_ == 0) close_recorder();
+  }
+
+  void close_recorder() {
+    request(recorder_, caf::infinite, done_atom_v, std::move(result_))
         .then(
             [this](run_result& final_result) {
               promise_.deliver(std::move(final_result));
@@ -320,6 +339,8 @@ class clock_actor : public caf::event_based_actor {
   std::vector<std::pair<caf::actor, participant_info>> pending_joins_;
   std::set<std::uint64_t> retired_;
   std::uint64_t joined_ = 0;
+  run_result result_;
+  std::size_t reports_pending_ = 0;
   std::vector<std::string> unexpected_down_;
   std::array<std::set<std::uint64_t>, phase_count> every_tick_;
   std::array<std::map<std::int64_t, std::set<std::uint64_t>>, phase_count> calendar_;

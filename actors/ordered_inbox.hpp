@@ -19,6 +19,11 @@ struct mail_stamp {
   friend auto operator<=>(const mail_stamp&, const mail_stamp&) = default;
 };
 
+template <class Inspector>
+typename Inspector::result_type inspect(Inspector& f, mail_stamp& x) {
+  return f(x.tick, x.phase, x.sender, x.seq);
+}
+
 /// Buffers mail between participants and releases it in a canonical order, so a run does not
 /// depend on the order in which different senders' messages reached the mailbox.
 ///

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 
 namespace argus::actors {
@@ -14,6 +15,14 @@ inline constexpr std::uint64_t script = 1;
 /// Camera node with scenario id `camera_id` (>= 1).
 constexpr std::uint64_t camera(int camera_id) noexcept {
   return 1'000'000ULL + static_cast<std::uint64_t>(camera_id);
+}
+
+/// The fault injector.
+inline constexpr std::uint64_t fault_injector = 2;
+
+/// Link number `index` in the topology's sorted link list.
+constexpr std::uint64_t link(std::size_t index) noexcept {
+  return 2'000'000'000ULL + static_cast<std::uint64_t>(index);
 }
 
 }  // namespace participant_ids

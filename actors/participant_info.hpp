@@ -20,11 +20,13 @@ struct participant_info {
   std::string name;
   phase tick_phase = phase::cameras;
   wake_mode mode = wake_mode::every_tick;
+  /// Answers `(report_atom)` with a `link_report` when the run ends (links do).
+  bool reports_at_end = false;
 };
 
 template <class Inspector>
 typename Inspector::result_type inspect(Inspector& f, participant_info& x) {
-  return f(x.id, x.name, x.tick_phase, x.mode);
+  return f(x.id, x.name, x.tick_phase, x.mode, x.reports_at_end);
 }
 
 }  // namespace argus::actors

@@ -43,6 +43,38 @@ void write_event(recorder_state& st, const sim_event& ev) {
   ++st.by_kind[ev.kind];
 }
 
+nlohmann::json counts_json(const protocol::message_counts& c) {
+  return {{"sent", c.sent},          {"duplicated", c.duplicated}, {"delivered", c.delivered},
+          {"lost", c.lost},          {"dropped", c.dropped},       {"in_flight", c.in_flight},
+          {"balanced", c.balanced()}};
+}
+
+// Message fates per link and kind, their totals, and whether the accounting invariant
+// (sent + duplicated == delivered + lost + dropped + in flight) holds everywhere.
+nlohmann::json network_json(const std::map<std::string, protocol::accounting_by_kind>& links) {
+  protocol::accounting_by_kind by_kind;
+  protocol::message_counts total;
+  nlohmann::json per_link = nlohmann::json::object();
+  bool balanced = true;
+  for (const auto& [link, counts] : links) {
+    protocol::merge(by_kind, counts);
+    nlohmann::json kinds = nlohmann::json::object();
+    for (const auto& [kind, c] : counts) {
+      kinds[kind] = counts_json(c);
+      total += c;
+      balanced = balanced && c.balanced();
+    }
+    per_link[link] = std::move(kinds);
+  }
+  nlohmann::json kinds = nlohmann::json::object();
+  for (const auto& [kind, c] : by_kind) kinds[kind] = counts_json(c);
+  return {{"links", links.size()},
+          {"totals", counts_json(total)},
+          {"by_kind", std::move(kinds)},
+          {"invariant_holds", balanced && total.balanced()},
+          {"per_link", std::move(per_link)}};
+}
+
 nlohmann::json summary_json(const recorder_state& st, const run_result& r) {
   nlohmann::json j;
   j["scenario"] = st.settings.scenario;
@@ -58,6 +90,7 @@ nlohmann::json summary_json(const recorder_state& st, const run_result& r) {
   j["unexpected_down"] = r.unexpected_down;
   j["events_total"] = r.events_total;
   j["events_by_kind"] = r.events_by_kind;
+  j["network"] = network_json(r.links);
   return j;
 }
 

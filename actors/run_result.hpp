@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "protocol/message_accounting.hpp"
+
 namespace argus::actors {
 
 /// What a finished run reports (the clock fills the timing, the recorder the event counts);
@@ -18,12 +20,14 @@ struct run_result {
   std::vector<std::string> unexpected_down;
   std::uint64_t events_total = 0;
   std::map<std::string, std::uint64_t> events_by_kind;
+  /// Message fates per link ("link/1-2") and kind, from the links' end-of-run reports.
+  std::map<std::string, protocol::accounting_by_kind> links;
 };
 
 template <class Inspector>
 typename Inspector::result_type inspect(Inspector& f, run_result& x) {
   return f(x.ticks, x.virtual_seconds, x.wall_seconds, x.participants, x.unexpected_down,
-           x.events_total, x.events_by_kind);
+           x.events_total, x.events_by_kind, x.links);
 }
 
 }  // namespace argus::actors

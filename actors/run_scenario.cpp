@@ -7,11 +7,14 @@
 
 #include "actors/camera_node.hpp"
 #include "actors/clock.hpp"
+#include "actors/fault_injector.hpp"
+#include "actors/link.hpp"
 #include "actors/progress_printer.hpp"
 #include "actors/recorder.hpp"
 #include "actors/scenario_script.hpp"
 #include "actors/system_config.hpp"
 #include "actors/type_ids.hpp"
+#include "protocol/topology.hpp"
 
 namespace argus::actors {
 
@@ -48,16 +51,39 @@ run_outcome run_scenario(const config::scenario& scenario, bool show_progress) {
   cs.speed = scenario.run.speed;
   auto clock = spawn_clock(system, cs, recorder, progress);
 
-  // Joins go out from this thread, in this order, before `start`: enqueued in program order,
-  // they all reach the clock before it starts.
-  std::map<int, caf::actor> cameras;
-  for (const auto& cam : scenario.cameras) {
-    auto node = spawn_camera_node(system, cam);
-    caf::anon_send(clock, join_atom_v, node, camera_participant(cam));
-    cameras.emplace(cam.id, node);
+  // Joins and link attachments go out from this thread, in this order, before `start`:
+  // enqueued in program order, they all reach their receivers before the first tick.
+  protocol::topology topo(scenario);
+  network_directory net;
+  std::vector<std::pair<caf::actor, participant_info>> links;
+  for (std::size_t i = 0; i < topo.links().size(); ++i) {
+    auto [a, b] = topo.links()[i];
+    auto info = link_participant(i, a, b);
+    auto handle = spawn_link(system, scenario, i, a, b);
+    net.links[a][b] = attached_link{info.id, handle};
+    net.links[b][a] = attached_link{info.id, handle};
+    links.emplace_back(handle, info);
   }
-  auto script = spawn_scenario_script(system, scenario, clock, std::move(cameras));
+  for (const auto& cam : scenario.cameras) {
+    auto node = spawn_camera_node(system, scenario, cam, net.links[cam.id]);
+    net.cameras.emplace(cam.id, node);
+    caf::anon_send(clock, join_atom_v, node, camera_participant(cam));
+  }
+  std::uint64_t seq = 0;
+  for (const auto& [camera, neighbours] : net.links)
+    for (const auto& [neighbour, link] : neighbours) {
+      link_command attach;
+      attach.op = link_op::attach;
+      attach.node = camera;
+      attach.handle = net.cameras.at(camera);
+      // Stamped before tick 0, so each link reads it on its first tick.
+      caf::anon_send(link.handle, link_cmd_atom_v, mail_stamp{-1, 0, 0, seq++}, attach);
+    }
+  for (const auto& [handle, info] : links) caf::anon_send(clock, join_atom_v, handle, info);
+  auto script = spawn_scenario_script(system, scenario, clock);
   caf::anon_send(clock, join_atom_v, script, script_participant());
+  auto faults = spawn_fault_injector(system, scenario, clock, std::move(net));
+  caf::anon_send(clock, join_atom_v, faults, fault_injector_participant(scenario));
 
   std::string failure;
   {

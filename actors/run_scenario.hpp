@@ -14,8 +14,9 @@ struct run_outcome {
 };
 
 /// Runs a validated scenario to its end on a CAF scheduler with `scenario.run.threads` worker
-/// threads (0 = one per hardware thread): spawns the clock, the recorder, one camera node per
-/// camera and the scenario script, and waits for the clock. Throws std::runtime_error when the
+/// threads (0 = one per hardware thread): spawns the clock, the recorder, one link per pair of
+/// neighbours, one camera node per camera, the scenario script and the fault injector, and
+/// waits for the clock. Throws std::runtime_error when the
 /// run cannot complete (e.g. the output directory is not writable).
 run_outcome run_scenario(const config::scenario& scenario, bool show_progress);
 

@@ -6,11 +6,15 @@
 #include <cstdint>
 #include <vector>
 
+#include "actors/link_command.hpp"
+#include "actors/link_report.hpp"
+#include "actors/ordered_inbox.hpp"
 #include "actors/participant_info.hpp"
 #include "actors/run_result.hpp"
 #include "actors/sim_event.hpp"
 #include "actors/tick_ack.hpp"
 #include "caf/all.hpp"
+#include "protocol/net_message.hpp"
 
 CAF_BEGIN_TYPE_ID_BLOCK(argus, caf::first_custom_type_id)
 
@@ -19,6 +23,10 @@ CAF_ADD_TYPE_ID(argus, (std::vector<argus::actors::sim_event>))
 CAF_ADD_TYPE_ID(argus, (argus::actors::participant_info))
 CAF_ADD_TYPE_ID(argus, (argus::actors::tick_ack))
 CAF_ADD_TYPE_ID(argus, (argus::actors::run_result))
+CAF_ADD_TYPE_ID(argus, (argus::actors::mail_stamp))
+CAF_ADD_TYPE_ID(argus, (argus::actors::link_command))
+CAF_ADD_TYPE_ID(argus, (argus::actors::link_report))
+CAF_ADD_TYPE_ID(argus, (argus::protocol::net_message))
 
 CAF_ADD_ATOM(argus, argus::actors, tick_atom, "tick")
 CAF_ADD_ATOM(argus, argus::actors, join_atom, "join")
@@ -29,5 +37,9 @@ CAF_ADD_ATOM(argus, argus::actors, record_atom, "record")
 CAF_ADD_ATOM(argus, argus::actors, recorded_atom, "recorded")
 CAF_ADD_ATOM(argus, argus::actors, done_atom, "done")
 CAF_ADD_ATOM(argus, argus::actors, progress_atom, "progress")
+CAF_ADD_ATOM(argus, argus::actors, report_atom, "report")
+CAF_ADD_ATOM(argus, argus::actors, net_send_atom, "net_send")
+CAF_ADD_ATOM(argus, argus::actors, net_deliver_atom, "net_dlvr")
+CAF_ADD_ATOM(argus, argus::actors, link_cmd_atom, "link_cmd")
 
 CAF_END_TYPE_ID_BLOCK(argus)

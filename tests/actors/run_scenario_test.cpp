@@ -71,12 +71,12 @@ TEST(run_scenario, runs_the_script_crashes_and_recovers_cameras_and_writes_outpu
   // The recovered camera comes back empty-handed and announces itself on its first tick.
   EXPECT_EQ(find("node_up", 2.0), 1);
   EXPECT_EQ(find("fault", 2.0), 1);
-  // Link faults are logged but have no effect until the link layer exists.
+  // Link faults reach the link between the two cameras.
   auto cut = std::find_if(events.begin(), events.end(), [](const nlohmann::json& e) {
     return e.value("fault", "") == "link_cut";
   });
   ASSERT_NE(cut, events.end());
-  EXPECT_EQ((*cut)["applied"], false);
+  EXPECT_EQ((*cut)["applied"], true);
   // Events are in time order.
   for (std::size_t i = 1; i < events.size(); ++i)
     EXPECT_LE(events[i - 1]["tick"].get<int>(), events[i]["tick"].get<int>());
@@ -84,7 +84,11 @@ TEST(run_scenario, runs_the_script_crashes_and_recovers_cameras_and_writes_outpu
   auto summary = nlohmann::json::parse(summary_in);
   EXPECT_EQ(summary["ticks"], 60);
   EXPECT_EQ(summary["events_total"], events.size());
-  EXPECT_EQ(summary["participants"], 5);  // 3 cameras, the script, 1 recovered camera
+  // 3 cameras, 3 links (all within range), the script, the fault injector, 1 recovered camera.
+  EXPECT_EQ(summary["participants"], 9);
+  EXPECT_EQ(summary["network"]["links"], 3);
+  EXPECT_GT(summary["network"]["totals"]["delivered"].get<int>(), 0);
+  EXPECT_EQ(summary["network"]["invariant_holds"], true);
   std::filesystem::remove_all(dir);
 }
 

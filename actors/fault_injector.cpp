@@ -1,0 +1,205 @@
+#include "actors/fault_injector.hpp"
+
+#include <cmath>
+#include <random>
+#include <string_view>
+#include <vector>
+
+#include "actors/link_command.hpp"
+#include "actors/ordered_inbox.hpp"
+#include "actors/participant_ids.hpp"
+#include "actors/tick_context.hpp"
+#include "actors/type_ids.hpp"
+#include "config/derive_seed.hpp"
+#include "config/enum_names.hpp"
+#include "fmt/format.h"
+
+namespace argus::actors {
+namespace {
+
+struct planned {
+  std::int64_t tick = 0;
+  std::size_t fault = 0;  // index into scenario.faults
+  bool recovery = false;  // the second half of a crash_and_recover
+};
+
+struct injector_state {
+  participant_info info;
+  config::scenario scenario;
+  caf::actor clock;
+  network_directory net;
+  std::vector<planned> plan;  // by tick, then file order
+  std::size_t next = 0;
+  std::mt19937_64 rng;
+  double failure_per_tick = 0.0;
+  std::uint64_t mail_seq = 0;
+};
+
+using injector = caf::stateful_actor<injector_state>;
+
+std::int64_t to_tick(config::seconds at, config::seconds tick) {
+  return static_cast<std::int64_t>(std::llround(at / tick));
+}
+
+void tell_links(injector* self, tick_context& ctx, int camera, link_command cmd) {
+  auto& st = self->state;
+  auto it = st.net.links.find(camera);
+  if (it == st.net.links.end()) return;
+  for (const auto& [neighbour, link] : it->second) {
+    mail_stamp stamp{ctx.tick(), static_cast<std::uint8_t>(phase::faults), st.info.id,
+                     st.mail_seq++};
+    self->send(link.handle, link_cmd_atom_v, stamp, cmd);
+    ctx.sent_mail_to(link.participant);
+  }
+}
+
+void tell_link(injector* self, tick_context& ctx, int a, int b, link_command cmd) {
+  auto& st = self->state;
+  auto it = st.net.links.find(a);
+  if (it == st.net.links.end()) return;
+  auto link = it->second.find(b);
+  if (link == it->second.end()) return;
+  mail_stamp stamp{ctx.tick(), static_cast<std::uint8_t>(phase::faults), st.info.id, st.mail_seq++};
+  self->send(link->second.handle, link_cmd_atom_v, stamp, std::move(cmd));
+  ctx.sent_mail_to(link->second.participant);
+}
+
+bool crash(injector* self, tick_context& ctx, int camera) {
+  auto& st = self->state;
+  auto it = st.net.cameras.find(camera);
+  if (it == st.net.cameras.end() || !it->second) return false;  // already down
+  // The retire reaches the clock before this actor's ack: the camera leaves the barrier at a
+  // deterministic point, and its death is not reported as unexpected.
+  self->send(st.clock, retire_atom_v, participant_ids::camera(camera));
+  self->send_exit(it->second, caf::exit_reason::kill);
+  it->second = caf::actor{};
+  link_command cmd;
+  cmd.op = link_op::node_down;
+  cmd.node = camera;
+  tell_links(self, ctx, camera, cmd);
+  return true;
+}
+
+bool recover(injector* self, tick_context& ctx, int camera) {
+  auto& st = self->state;
+  auto& slot = st.net.cameras[camera];
+  if (slot) return false;  // it did not go down, or is already back
+  for (const auto& cam : st.scenario.cameras) {
+    if (cam.id != camera) continue;
+    slot = spawn_camera_node(self->system(), st.scenario, cam, st.net.links[camera]);
+    self->send(st.clock, join_atom_v, slot, camera_participant(cam));
+    link_command cmd;
+    cmd.op = link_op::attach;
+    cmd.node = camera;
+    cmd.handle = slot;
+    tell_links(self, ctx, camera, cmd);
+    return true;
+  }
+  return false;
+}
+
+void perform(injector* self, tick_context& ctx, const planned& p) {
+  auto& st = self->state;
+  const auto& f = st.scenario.faults[p.fault];
+  if (p.recovery) {
+    bool applied = recover(self, ctx, f.camera);
+    ctx.emit("node_recovered", fmt::format(R"("camera":{},"applied":{})", f.camera, applied));
+    return;
+  }
+  bool applied = true;
+  link_command cmd;
+  cmd.node = f.camera;
+  switch (f.kind) {
+    case config::fault_kind::crash:
+    case config::fault_kind::crash_and_recover:
+      applied = crash(self, ctx, f.camera);
+      break;
+    case config::fault_kind::link_cut:
+      cmd.op = link_op::cut;
+      tell_link(self, ctx, f.camera, *f.peer, cmd);
+      break;
+    case config::fault_kind::link_heal:
+      cmd.op = link_op::heal;
+      tell_link(self, ctx, f.camera, *f.peer, cmd);
+      break;
+    case config::fault_kind::loss_burst:
+      cmd.op = link_op::loss_burst;
+      cmd.loss_probability = f.loss_probability;
+      cmd.until_tick = ctx.tick() + to_tick(f.length, st.scenario.run.tick);
+      tell_links(self, ctx, f.camera, cmd);
+      break;
+  }
+  auto peer = f.peer ? fmt::format(R"(,"peer":{})", *f.peer) : std::string{};
+  ctx.emit("fault", fmt::format(R"("fault":"{}","camera":{}{},"random":false,"applied":{})",
+                                config::yaml_name(f.kind), f.camera, peer, applied));
+}
+
+void random_failures(injector* self, tick_context& ctx) {
+  auto& st = self->state;
+  if (st.failure_per_tick <= 0.0) return;
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (auto& [camera, handle] : st.net.cameras) {
+    // One draw per camera per tick, alive or not, so one failure never shifts the others.
+    bool fails = unit(st.rng) < st.failure_per_tick;
+    if (fails && handle && crash(self, ctx, camera))
+      ctx.emit("fault",
+               fmt::format(R"("fault":"crash","camera":{},"random":true,"applied":true)", camera));
+  }
+}
+
+std::vector<planned> make_plan(const config::scenario& s) {
+  std::vector<planned> out;
+  for (std::size_t i = 0; i < s.faults.size(); ++i) {
+    const auto& f = s.faults[i];
+    out.push_back({to_tick(f.at, s.run.tick), i, false});
+    if (f.kind == config::fault_kind::crash_and_recover)
+      out.push_back({to_tick(f.at + f.length, s.run.tick), i, true});
+  }
+  std::stable_sort(out.begin(), out.end(),
+                   [](const planned& a, const planned& b) { return a.tick < b.tick; });
+  return out;
+}
+
+caf::behavior fault_injector(injector* self, config::scenario scenario, caf::actor clock,
+                             network_directory net) {
+  auto& st = self->state;
+  st.info = fault_injector_participant(scenario);
+  st.plan = make_plan(scenario);
+  st.rng.seed(config::derive_seed(scenario.run.seed, st.info.id));
+  // Table 2's failure probability is read per second of virtual time (docs/network.md).
+  st.failure_per_tick =
+      1.0 - std::pow(1.0 - scenario.network.node_failure_probability, scenario.run.tick.count());
+  st.scenario = std::move(scenario);
+  st.clock = std::move(clock);
+  st.net = std::move(net);
+  return {
+      [self](tick_atom, std::int64_t tick, std::uint8_t) {
+        auto& st = self->state;
+        tick_context ctx(st.info.id, st.info.name, tick, st.info.tick_phase);
+        while (st.next < st.plan.size() && st.plan[st.next].tick <= tick)
+          perform(self, ctx, st.plan[st.next++]);
+        random_failures(self, ctx);
+        if (st.next < st.plan.size()) ctx.wake_at(st.plan[st.next].tick);
+        self->send(st.clock, std::move(ctx).finish());
+      },
+  };
+}
+
+}  // namespace
+
+participant_info fault_injector_participant(const config::scenario& scenario) {
+  participant_info info;
+  info.id = participant_ids::fault_injector;
+  info.name = "faults";
+  info.tick_phase = phase::faults;
+  info.mode = scenario.network.node_failure_probability > 0.0 ? wake_mode::every_tick
+                                                              : wake_mode::on_demand;
+  return info;
+}
+
+caf::actor spawn_fault_injector(caf::actor_system& system, const config::scenario& scenario,
+                                caf::actor clock, network_directory directory) {
+  return system.spawn(fault_injector, scenario, std::move(clock), std::move(directory));
+}
+
+}  // namespace argus::actors

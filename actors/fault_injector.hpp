@@ -1,0 +1,37 @@
+#pragma once
+
+#include <map>
+#include <utility>
+
+#include "actors/camera_node.hpp"
+#include "actors/participant_info.hpp"
+#include "caf/fwd.hpp"
+#include "config/scenario.hpp"
+
+namespace argus::actors {
+
+/// Everything the fault injector acts on: the camera actors and every camera's links.
+struct network_directory {
+  std::map<int, caf::actor> cameras;
+  /// Each camera's links, by neighbour id.
+  std::map<int, link_directory> links;
+};
+
+/// How the fault injector takes part in the clock: phase faults; every tick when random node
+/// failures are on, else woken at its next scheduled fault.
+participant_info fault_injector_participant(const config::scenario& scenario);
+
+/// Spawns the fault injector (docs/network.md). At each scheduled fault's time, and at random
+/// with `network.node_failure_probability` per node per second of virtual time, it:
+/// - `crash`: retires the camera at the clock, kills its actor (a CAF exit, reason kill), and
+///   tells the camera's links that the node is down, so messages to it are dropped;
+/// - `crash_and_recover`: the same, then after `length` spawns a fresh, empty-handed camera
+///   actor, joins it to the clock and attaches it to its links (`node_recovered`);
+/// - `link_cut` / `link_heal`: cuts or heals the link between `camera` and `peer`;
+/// - `loss_burst`: sets every link of `camera` to `loss_probability` for `length`.
+/// Every action is logged as a `fault` event. Camera nodes are told nothing: they learn of
+/// failures only through silence (node_network).
+caf::actor spawn_fault_injector(caf::actor_system& system, const config::scenario& scenario,
+                                caf::actor clock, network_directory directory);
+
+}  // namespace argus::actors

@@ -1,0 +1,37 @@
+#include "protocol/link_model.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace argus::protocol {
+
+link_model::link_model(const config::network_settings& network, double tick_seconds,
+                       std::uint64_t seed)
+    : loss_(network.loss_probability),
+      duplicate_(network.duplicate_probability),
+      min_delay_s_(network.min_delay.count()),
+      max_delay_s_(network.max_delay.count()),
+      tick_s_(tick_seconds),
+      rng_(seed) {}
+
+std::int64_t link_model::draw_delay_ticks() {
+  double delay = min_delay_s_;
+  if (max_delay_s_ > min_delay_s_)
+    delay = std::uniform_real_distribution<double>(min_delay_s_, max_delay_s_)(rng_);
+  // Rounded up: a message is never early. 1e-9 absorbs 0.2 / (1/15) = 3.0000000000000004.
+  auto ticks = static_cast<std::int64_t>(std::ceil(delay / tick_s_ - 1e-9));
+  return std::max<std::int64_t>(1, ticks);
+}
+
+link_fate link_model::draw(double loss_probability) {
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  link_fate fate;
+  // Every draw is made whatever the outcome, so one message's fate never shifts another's.
+  fate.lost = unit(rng_) < loss_probability;
+  fate.delay_ticks = draw_delay_ticks();
+  fate.duplicated = unit(rng_) < duplicate_;
+  fate.duplicate_delay_ticks = draw_delay_ticks();
+  return fate;
+}
+
+}  // namespace argus::protocol

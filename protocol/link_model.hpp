@@ -1,0 +1,44 @@
+#pragma once
+
+#include <cstdint>
+#include <random>
+
+#include "config/scenario.hpp"
+
+namespace argus::protocol {
+
+/// What happens to one message on a link.
+struct link_fate {
+  bool lost = false;
+  /// Ticks from sending to delivery (>= 1: delivery is on a later tick boundary).
+  std::int64_t delay_ticks = 1;
+  /// A second copy arrives too (scenario `duplicate_probability`).
+  bool duplicated = false;
+  std::int64_t duplicate_delay_ticks = 1;
+};
+
+/// The random behaviour of a link (Table 2): loss with probability `loss_probability`, delay
+/// uniform in [min_delay, max_delay] rounded up to whole ticks, optional duplication. One
+/// instance per link, seeded from the run seed and the link's id.
+class link_model {
+ public:
+  link_model(const config::network_settings& network, double tick_seconds, std::uint64_t seed);
+
+  /// Draws the fate of one message; `loss_probability` overrides the scenario's (loss bursts).
+  link_fate draw(double loss_probability);
+
+  /// Draws with the scenario's loss probability.
+  link_fate draw() { return draw(loss_); }
+
+ private:
+  std::int64_t draw_delay_ticks();
+
+  double loss_;
+  double duplicate_;
+  double min_delay_s_;
+  double max_delay_s_;
+  double tick_s_;
+  std::mt19937_64 rng_;
+};
+
+}  // namespace argus::protocol

@@ -1,0 +1,97 @@
+#include "protocol/node_network.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+namespace argus::protocol {
+namespace {
+
+std::int64_t ticks_of(config::seconds d, config::seconds tick) {
+  return std::max<std::int64_t>(1, static_cast<std::int64_t>(std::llround(d / tick)));
+}
+
+}  // namespace
+
+node_network::node_network(int self, std::vector<int> attached, const config::scenario& s)
+    : self_(self),
+      attached_(std::move(attached)),
+      router_(self),
+      max_hops_(static_cast<std::uint8_t>(std::min(255u, s.network.max_hops))),
+      heartbeat_ticks_(ticks_of(s.controller.heartbeat_interval, s.run.tick)),
+      silence_ticks_(ticks_of(s.controller.member_failure_timeout, s.run.tick)) {
+  std::sort(attached_.begin(), attached_.end());
+}
+
+void node_network::heard(std::int64_t tick, int neighbour) {
+  if (!std::binary_search(attached_.begin(), attached_.end(), neighbour)) return;
+  auto [it, first] = last_heard_.try_emplace(neighbour, tick);
+  it->second = tick;
+  if (first) {
+    changes_.push_back({neighbour, true});
+    refresh_live();
+  }
+}
+
+void node_network::refresh_live() {
+  live_.clear();
+  for (const auto& [n, t] : last_heard_) live_.push_back(n);
+}
+
+void node_network::receive(std::int64_t tick, int from, const net_message& m) {
+  heard(tick, from);
+  if (m.kind == "hello") return;  // its whole job was to be heard
+  route(m, router_.receive(m, from, live_));
+}
+
+void node_network::route(const net_message& m, const routing_decision& d) {
+  if (d.deliver) delivered_.push_back(m);
+  for (int n : d.forward_to) outgoing_.push_back({n, m});
+}
+
+void node_network::tick(std::int64_t tick) {
+  bool lost_any = false;
+  for (auto it = last_heard_.begin(); it != last_heard_.end();) {
+    if (tick - it->second > silence_ticks_) {
+      changes_.push_back({it->first, false});
+      it = last_heard_.erase(it);
+      lost_any = true;
+    } else {
+      ++it;
+    }
+  }
+  if (lost_any) refresh_live();
+  // Beacons are spread over the interval by node id, so nodes do not all speak at once.
+  if ((tick + self_) % heartbeat_ticks_ == 0) {
+    net_message hello;
+    hello.id = make_message_id(self_, next_seq_++);
+    hello.origin = self_;
+    hello.destination = broadcast;
+    hello.max_hops = 1;
+    hello.kind = "hello";
+    for (int n : attached_) outgoing_.push_back({n, hello});
+  }
+}
+
+void node_network::send(int destination, std::string kind, std::string body) {
+  net_message m;
+  m.id = make_message_id(self_, next_seq_++);
+  m.origin = self_;
+  m.destination = destination;
+  m.max_hops = max_hops_;
+  m.kind = std::move(kind);
+  m.body = std::move(body);
+  route(m, router_.originate(m, live_));
+}
+
+std::vector<outgoing_message> node_network::take_outgoing() {
+  return std::exchange(outgoing_, {});
+}
+std::vector<net_message> node_network::take_delivered() {
+  return std::exchange(delivered_, {});
+}
+std::vector<neighbour_change> node_network::take_changes() {
+  return std::exchange(changes_, {});
+}
+
+}  // namespace argus::protocol
