@@ -18,9 +18,13 @@ std::int64_t link_model::draw_delay_ticks() {
   double delay = min_delay_s_;
   if (max_delay_s_ > min_delay_s_)
     delay = std::uniform_real_distribution<double>(min_delay_s_, max_delay_s_)(rng_);
-  // Rounded up: a message is never early. 1e-9 absorbs 0.2 / (1/15) = 3.0000000000000004.
-  auto ticks = static_cast<std::int64_t>(std::ceil(delay / tick_s_ - 1e-9));
-  return std::max<std::int64_t>(1, ticks);
+  // Delivered on the nearest tick boundary (unbiased on average), kept within the bounds:
+  // never earlier than min_delay, never later than max_delay. 1e-9 absorbs binary fractions
+  // such as 0.2 / (1/15) = 3.0000000000000004.
+  auto lowest = static_cast<std::int64_t>(std::ceil(min_delay_s_ / tick_s_ - 1e-9));
+  auto highest = static_cast<std::int64_t>(std::floor(max_delay_s_ / tick_s_ + 1e-9));
+  auto ticks = static_cast<std::int64_t>(std::llround(delay / tick_s_));
+  return std::max<std::int64_t>(1, std::clamp(ticks, lowest, std::max(lowest, highest)));
 }
 
 link_fate link_model::draw(double loss_probability) {

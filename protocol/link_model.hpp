@@ -18,7 +18,8 @@ struct link_fate {
 };
 
 /// The random behaviour of a link (Table 2): loss with probability `loss_probability`, delay
-/// uniform in [min_delay, max_delay] rounded up to whole ticks, optional duplication. One
+/// uniform in [min_delay, max_delay] delivered on the nearest tick boundary within those
+/// bounds (200-500 ms at 15 Hz: 3 to 7 ticks), optional duplication. One
 /// instance per link, seeded from the run seed and the link's id.
 class link_model {
  public:

@@ -13,41 +13,64 @@ namespace argus::world {
 
 std::string_view to_string(activity a) noexcept {
   switch (a) {
-    case activity::walking: return "walking";
-    case activity::queueing: return "queueing";
-    case activity::buying_ticket: return "buying_ticket";
-    case activity::using_vending_machine: return "using_vending_machine";
-    case activity::sitting: return "sitting";
-    case activity::meeting: return "meeting";
-    case activity::leaving: return "leaving";
+    case activity::walking:
+      return "walking";
+    case activity::queueing:
+      return "queueing";
+    case activity::buying_ticket:
+      return "buying_ticket";
+    case activity::using_vending_machine:
+      return "using_vending_machine";
+    case activity::sitting:
+      return "sitting";
+    case activity::meeting:
+      return "meeting";
+    case activity::leaving:
+      return "leaving";
   }
   return "?";
 }
 
 std::string_view to_string(goal_kind g) noexcept {
   switch (g) {
-    case goal_kind::buy_ticket: return "buy_ticket";
-    case goal_kind::rest_on_bench: return "rest_on_bench";
-    case goal_kind::use_vending_machine: return "use_vending_machine";
-    case goal_kind::meet_in_waiting_room: return "meet_in_waiting_room";
-    case goal_kind::go_to_platform: return "go_to_platform";
-    case goal_kind::leave_station: return "leave_station";
+    case goal_kind::buy_ticket:
+      return "buy_ticket";
+    case goal_kind::rest_on_bench:
+      return "rest_on_bench";
+    case goal_kind::use_vending_machine:
+      return "use_vending_machine";
+    case goal_kind::meet_in_waiting_room:
+      return "meet_in_waiting_room";
+    case goal_kind::go_to_platform:
+      return "go_to_platform";
+    case goal_kind::leave_station:
+      return "leave_station";
   }
   return "?";
 }
 
 std::string_view to_string(event_kind kind) noexcept {
   switch (kind) {
-    case event_kind::spawned: return "spawned";
-    case event_kind::left: return "left";
-    case event_kind::goal_started: return "goal_started";
-    case event_kind::goal_completed: return "goal_completed";
-    case event_kind::goal_abandoned: return "goal_abandoned";
-    case event_kind::joined_queue: return "joined_queue";
-    case event_kind::service_started: return "service_started";
-    case event_kind::service_finished: return "service_finished";
-    case event_kind::sat_down: return "sat_down";
-    case event_kind::stood_up: return "stood_up";
+    case event_kind::spawned:
+      return "spawned";
+    case event_kind::left:
+      return "left";
+    case event_kind::goal_started:
+      return "goal_started";
+    case event_kind::goal_completed:
+      return "goal_completed";
+    case event_kind::goal_abandoned:
+      return "goal_abandoned";
+    case event_kind::joined_queue:
+      return "joined_queue";
+    case event_kind::service_started:
+      return "service_started";
+    case event_kind::service_finished:
+      return "service_finished";
+    case event_kind::sat_down:
+      return "sat_down";
+    case event_kind::stood_up:
+      return "stood_up";
   }
   return "?";
 }
@@ -59,19 +82,38 @@ constexpr std::uint64_t pedestrian_stream = 0x7065646573747269ULL;  // "pedestri
 
 // Palettes. Near-twins on purpose (crimson/red, navy/dark blue, two greys): the trackers
 // must sometimes confuse pedestrians (Section III-B).
-constexpr std::array<rgb8, 16> shirts{{{200, 30, 40},   {176, 24, 36},  {30, 60, 150},
-                                       {24, 48, 128},   {40, 140, 60},  {240, 240, 235},
-                                       {230, 200, 40},  {120, 120, 125}, {105, 105, 110},
-                                       {250, 130, 30},  {130, 60, 150}, {20, 20, 22},
-                                       {90, 170, 210},  {220, 120, 160}, {110, 80, 50},
+constexpr std::array<rgb8, 16> shirts{{{200, 30, 40},
+                                       {176, 24, 36},
+                                       {30, 60, 150},
+                                       {24, 48, 128},
+                                       {40, 140, 60},
+                                       {240, 240, 235},
+                                       {230, 200, 40},
+                                       {120, 120, 125},
+                                       {105, 105, 110},
+                                       {250, 130, 30},
+                                       {130, 60, 150},
+                                       {20, 20, 22},
+                                       {90, 170, 210},
+                                       {220, 120, 160},
+                                       {110, 80, 50},
                                        {60, 110, 100}}};
-constexpr std::array<rgb8, 8> trousers{{{30, 35, 60},   {25, 30, 52},  {20, 20, 22},
-                                        {90, 90, 95},   {150, 130, 100}, {60, 80, 130},
-                                        {80, 60, 40},   {200, 190, 170}}};
-constexpr std::array<rgb8, 6> skins{{{255, 220, 190}, {240, 195, 160}, {205, 150, 110},
-                                     {170, 115, 80},  {120, 80, 55},   {85, 55, 40}}};
-constexpr std::array<rgb8, 6> hairs{{{20, 15, 10},  {60, 40, 25},   {110, 75, 40},
-                                     {200, 170, 110}, {150, 60, 30}, {170, 170, 170}}};
+constexpr std::array<rgb8, 8> trousers{{{30, 35, 60},
+                                        {25, 30, 52},
+                                        {20, 20, 22},
+                                        {90, 90, 95},
+                                        {150, 130, 100},
+                                        {60, 80, 130},
+                                        {80, 60, 40},
+                                        {200, 190, 170}}};
+constexpr std::array<rgb8, 6> skins{{{255, 220, 190},
+                                     {240, 195, 160},
+                                     {205, 150, 110},
+                                     {170, 115, 80},
+                                     {120, 80, 55},
+                                     {85, 55, 40}}};
+constexpr std::array<rgb8, 6> hairs{
+    {{20, 15, 10}, {60, 40, 25}, {110, 75, 40}, {200, 170, 110}, {150, 60, 30}, {170, 170, 170}}};
 
 template <class T, std::size_t N>
 T pick(rng& random, const std::array<T, N>& from) {
@@ -172,12 +214,24 @@ class stepper {
     emit(event_kind::goal_started);
     bool ok = true;
     switch (g) {
-      case goal_kind::buy_ticket: ok = choose_counter(false); break;
-      case goal_kind::use_vending_machine: ok = choose_counter(true); break;
-      case goal_kind::rest_on_bench: ok = choose_seat(); break;
-      case goal_kind::meet_in_waiting_room: ok = choose_meeting_point(); break;
-      case goal_kind::go_to_platform: ok = choose_stairs(); break;
-      case goal_kind::leave_station: ok = choose_exit(); break;
+      case goal_kind::buy_ticket:
+        ok = choose_counter(false);
+        break;
+      case goal_kind::use_vending_machine:
+        ok = choose_counter(true);
+        break;
+      case goal_kind::rest_on_bench:
+        ok = choose_seat();
+        break;
+      case goal_kind::meet_in_waiting_room:
+        ok = choose_meeting_point();
+        break;
+      case goal_kind::go_to_platform:
+        ok = choose_stairs();
+        break;
+      case goal_kind::leave_station:
+        ok = choose_exit();
+        break;
     }
     if (!ok) {
       abandon_goal();
@@ -204,7 +258,7 @@ class stepper {
     if (is_final(s_.goal)) {
       // A last goal cannot be skipped: try the other kind of way out.
       const auto other = s_.goal == goal_kind::go_to_platform ? goal_kind::leave_station
-                                                               : goal_kind::go_to_platform;
+                                                              : goal_kind::go_to_platform;
       self_.agenda[self_.agenda_next] = other;
       begin_goal(other);
       return;
@@ -320,11 +374,13 @@ class stepper {
     const double dt = settings_.tick_s;
     switch (s_.doing) {
       case activity::walking:
-      case activity::leaving: return arrive();
+      case activity::leaving:
+        return arrive();
       case activity::queueing: {
         const auto& c = where_.counter(static_cast<std::size_t>(s_.counter));
         const auto rank = previous_.queue_rank(s_.counter, s_.queue_join_tick, s_.id);
-        self_.point = c.service_point + c.queue_direction * c.queue_spacing_m * static_cast<double>(rank);
+        self_.point =
+            c.service_point + c.queue_direction * c.queue_spacing_m * static_cast<double>(rank);
         if (rank == 0 && (s_.position - c.service_point).norm() < 0.25) {
           s_.doing = where_.is_vending_machine(static_cast<std::size_t>(s_.counter))
                          ? activity::using_vending_machine
@@ -378,7 +434,8 @@ class stepper {
           s_.doing = activity::queueing;
           emit(event_kind::joined_queue, s_.counter);
           const auto rank = previous_.queue_rank(s_.counter, tick_, s_.id);
-          self_.point = c.service_point + c.queue_direction * c.queue_spacing_m * static_cast<double>(rank);
+          self_.point =
+              c.service_point + c.queue_direction * c.queue_spacing_m * static_cast<double>(rank);
         }
         return true;
       }
@@ -438,13 +495,16 @@ class stepper {
     const double v0 = self_.preferred_speed_mps;
     vec2 desired = vec2::Zero();
     const double to_point = self_.has_point ? (self_.point - s_.position).norm() : 1e9;
-    if (to_point < settings_.direct_steering_m) {
+    // In a line, steer straight at the slot: the line stands in open floor by the counter.
+    if (to_point < settings_.direct_steering_m || s_.doing == activity::queueing) {
       // Arrival: slow down over the last metre.
-      if (to_point > 0.03) desired = (self_.point - s_.position) / to_point * v0 * std::min(1.0, to_point);
+      if (to_point > 0.03)
+        desired = (self_.point - s_.position) / to_point * v0 * std::min(1.0, to_point);
     } else {
       desired = where_.direction_to(self_.field, s_.position) * v0;
     }
-    const vec2 heading = s_.velocity.norm() > 0.05 ? vec2(s_.velocity.normalized()) : desired.normalized();
+    const vec2 heading =
+        s_.velocity.norm() > 0.05 ? vec2(s_.velocity.normalized()) : desired.normalized();
     vec2 acceleration = (desired - s_.velocity) / settings_.relaxation_s;
     std::array<half_plane, 48> planes;
     std::size_t plane_count = 0;
@@ -461,8 +521,10 @@ class stepper {
       const bool same_line = in_line && other.counter == s_.counter;
       if (!same_line) {
         const double cos_phi = heading.dot(n);
-        const double weight = settings_.anisotropy + (1.0 - settings_.anisotropy) * (1.0 + cos_phi) / 2.0;
-        acceleration -= n * (settings_.social_strength * weight * std::exp(-gap / settings_.social_range_m));
+        const double weight =
+            settings_.anisotropy + (1.0 - settings_.anisotropy) * (1.0 + cos_phi) / 2.0;
+        acceleration -=
+            n * (settings_.social_strength * weight * std::exp(-gap / settings_.social_range_m));
       }
       if (gap < 0.6 && plane_count < planes.size()) {
         planes[plane_count++] = {n, std::max(gap - 0.01, 0.0) / (2.0 * dt)};

@@ -20,12 +20,18 @@ namespace argus::world {
 
 const char* to_string(region_kind kind) noexcept {
   switch (kind) {
-    case region_kind::concourse: return "concourse";
-    case region_kind::waiting_room: return "waiting_room";
-    case region_kind::arcade: return "arcade";
-    case region_kind::platforms: return "platforms";
-    case region_kind::tracks: return "tracks";
-    case region_kind::other: return "other";
+    case region_kind::concourse:
+      return "concourse";
+    case region_kind::waiting_room:
+      return "waiting_room";
+    case region_kind::arcade:
+      return "arcade";
+    case region_kind::platforms:
+      return "platforms";
+    case region_kind::tracks:
+      return "tracks";
+    case region_kind::other:
+      return "other";
   }
   return "?";
 }
@@ -43,14 +49,19 @@ using config::value_bounds;
 using config::yaml_reader;
 
 constexpr std::array<std::string_view, 11> layout_keys{
-    "name",     "size_m",        "walls",    "obstacles", "regions",       "portals",
-    "ticket_booths", "vending_machines", "benches", "stairs", "meeting_points"};
+    "name",          "size_m",           "walls",   "obstacles", "regions",       "portals",
+    "ticket_booths", "vending_machines", "benches", "stairs",    "meeting_points"};
 constexpr std::array<std::string_view, 4> obstacle_keys{"name", "polygon", "min", "max"};
 constexpr std::array<std::string_view, 4> region_keys{"name", "kind", "min", "max"};
-constexpr std::array<std::string_view, 9> counter_keys{
-    "name",           "min",          "max",
-    "service_point",  "queue_direction", "queue_spacing_m",
-    "max_queue_length", "service_time_s", "note"};
+constexpr std::array<std::string_view, 9> counter_keys{"name",
+                                                       "min",
+                                                       "max",
+                                                       "service_point",
+                                                       "queue_direction",
+                                                       "queue_spacing_m",
+                                                       "max_queue_length",
+                                                       "service_time_s",
+                                                       "note"};
 constexpr std::array<std::string_view, 5> bench_keys{"name", "from", "to", "seats", "facing"};
 constexpr std::array<std::string_view, 3> stairs_keys{"name", "min", "max"};
 constexpr std::array<std::string_view, 3> meeting_keys{"name", "position", "radius_m"};
@@ -92,8 +103,9 @@ class layout_parser {
     if (auto node = document.find("benches")) read_benches(*node, out.benches);
     if (auto node = document.find("stairs")) read_stairs(*node, out.stairways);
     if (auto node = document.find("meeting_points")) read_meeting(*node, out.meeting_points);
-    const bool has_street = std::any_of(out.portals.begin(), out.portals.end(),
-                                        [](const portal& p) { return p.kind == portal_kind::street; });
+    const bool has_street =
+        std::any_of(out.portals.begin(), out.portals.end(),
+                    [](const portal& p) { return p.kind == portal_kind::street; });
     if (reader_.problems().empty() && !has_street && out.stairways.empty()) {
       reader_.report(root, "portals",
                      "expected at least one street portal or stairs (pedestrians enter there)");
@@ -115,8 +127,10 @@ class layout_parser {
     double y = 0.0;
     const auto bounds_x = inside ? value_bounds::closed(0.0, size_.x()) : value_bounds::any();
     const auto bounds_y = inside ? value_bounds::closed(0.0, size_.y()) : value_bounds::any();
-    const bool ok_x = reader_.read(node[0], field + "[0]", x, bounds_x, inside ? "the plan's width" : "");
-    const bool ok_y = reader_.read(node[1], field + "[1]", y, bounds_y, inside ? "the plan's height" : "");
+    const bool ok_x =
+        reader_.read(node[0], field + "[0]", x, bounds_x, inside ? "the plan's width" : "");
+    const bool ok_y =
+        reader_.read(node[1], field + "[1]", y, bounds_y, inside ? "the plan's height" : "");
     if (!ok_x || !ok_y) return std::nullopt;
     return vec2{x, y};
   }
@@ -170,9 +184,9 @@ class layout_parser {
       const auto path = item("walls", i);
       const auto& line = node[i];
       if (!line.IsSequence() || line.size() < 2) {
-        reader_.report(line, path,
-                       "expected a polyline of at least two points, got " +
-                           yaml_reader::describe(line));
+        reader_.report(
+            line, path,
+            "expected a polyline of at least two points, got " + yaml_reader::describe(line));
         continue;
       }
       wall w;
@@ -193,7 +207,8 @@ class layout_parser {
       map.read("name", o.name);
       if (const auto polygon = map.find("polygon")) {
         if (map.find("min") || map.find("max")) {
-          reader_.report(*polygon, map.field("polygon"), "expected either polygon or min/max, not both");
+          reader_.report(*polygon, map.field("polygon"),
+                         "expected either polygon or min/max, not both");
           continue;
         }
         if (!polygon->IsSequence() || polygon->size() < 3) {
@@ -224,7 +239,8 @@ class layout_parser {
       region r;
       require_name(map, node[i], r.name, path);
       if (map.require("kind")) {
-        if (auto index = reader_.read_choice(*map.find("kind"), map.field("kind"), region_kind_names)) {
+        if (auto index =
+                reader_.read_choice(*map.find("kind"), map.field("kind"), region_kind_names)) {
           r.kind = static_cast<region_kind>(*index);
         }
       }
@@ -243,7 +259,8 @@ class layout_parser {
       portal p;
       require_name(map, node[i], p.name, path);
       if (map.require("kind")) {
-        if (auto index = reader_.read_choice(*map.find("kind"), map.field("kind"), portal_kind_names)) {
+        if (auto index =
+                reader_.read_choice(*map.find("kind"), map.field("kind"), portal_kind_names)) {
           p.kind = static_cast<portal_kind>(*index);
         }
       }
@@ -346,7 +363,8 @@ class layout_parser {
       meeting_point m;
       require_name(map, node[i], m.name, path);
       if (map.require("position")) {
-        if (auto p = read_point(*map.find("position"), map.field("position"), true)) m.position = *p;
+        if (auto p = read_point(*map.find("position"), map.field("position"), true))
+          m.position = *p;
       }
       map.read("radius_m", m.radius_m, value_bounds::closed(0.0, 20.0));
       out.push_back(std::move(m));
@@ -369,8 +387,12 @@ layout parse_layout(std::string_view yaml_text, const std::string& source_name) 
         {problem{source_name, error.mark.line + 1, error.mark.column + 1, {}, error.msg}});
   }
   if (documents.size() > 1) {
-    throw scenario_error({problem{source_name, documents[1].Mark().line + 1, 1, {},
-                                  fmt::format("expected one YAML document, got {}", documents.size())}});
+    throw scenario_error(
+        {problem{source_name,
+                 documents[1].Mark().line + 1,
+                 1,
+                 {},
+                 fmt::format("expected one YAML document, got {}", documents.size())}});
   }
   layout out;
   out.name = std::filesystem::path{source_name}.stem().string();

@@ -26,8 +26,8 @@ std::size_t owner_of(std::span<const partition_bounds> strips, const vec2& p) {
 }
 
 partition_result partition_step(const station& where, const snapshot& previous,
-                                 std::span<const pedestrian> own, const partition_bounds& bounds,
-                                 const behaviour_settings& settings) {
+                                std::span<const pedestrian> own, const partition_bounds& bounds,
+                                const behaviour_settings& settings) {
   partition_result out;
   out.pedestrians.reserve(own.size());
   for (const auto& each : own) {

@@ -30,7 +30,28 @@ bool inside_polygon(const std::vector<vec2>& polygon, const vec2& p) {
   return inside;
 }
 
+bool segments_intersect(const vec2& p, const vec2& q, const segment& s) {
+  auto cross = [](const vec2& a, const vec2& b) { return a.x() * b.y() - a.y() * b.x(); };
+  const vec2 r = q - p;
+  const vec2 e = s.b - s.a;
+  const double denominator = cross(r, e);
+  if (std::abs(denominator) < 1e-12) return false;
+  const double t = cross(s.a - p, e) / denominator;
+  const double u = cross(s.a - p, r) / denominator;
+  return t >= 0.0 && t <= 1.0 && u >= 0.0 && u <= 1.0;
+}
+
+constexpr int step_x[8] = {1, 1, 0, -1, -1, -1, 0, 1};
+constexpr int step_y[8] = {0, 1, 1, 1, 0, -1, -1, -1};
+
 }  // namespace
+
+bool station::line_clear(const vec2& a, const vec2& b) const {
+  for (const auto s : segments_near(a)) {
+    if (segments_intersect(a, b, segments_[s])) return false;
+  }
+  return true;
+}
 
 vec2 segment::closest_point(const vec2& p) const {
   const vec2 ab = b - a;
@@ -65,7 +86,8 @@ std::shared_ptr<const station> station::load(const std::filesystem::path& file) 
 
 void station::build_segments() {
   for (const auto& w : plan_.walls) {
-    for (std::size_t i = 1; i < w.points.size(); ++i) segments_.push_back({w.points[i - 1], w.points[i]});
+    for (std::size_t i = 1; i < w.points.size(); ++i)
+      segments_.push_back({w.points[i - 1], w.points[i]});
   }
   auto add_polygon = [&](const std::vector<vec2>& polygon) {
     for (std::size_t i = 0; i < polygon.size(); ++i) {
@@ -89,14 +111,19 @@ void station::build_segment_index() {
   const double reach = segment_reach_m + index_cell_m * std::sqrt(0.5);
   for (std::uint32_t s = 0; s < segments_.size(); ++s) {
     const auto& seg = segments_[s];
-    const int x0 = std::max(0, static_cast<int>((std::min(seg.a.x(), seg.b.x()) - reach) / index_cell_m));
-    const int x1 = std::min(index_w_ - 1, static_cast<int>((std::max(seg.a.x(), seg.b.x()) + reach) / index_cell_m));
-    const int y0 = std::max(0, static_cast<int>((std::min(seg.a.y(), seg.b.y()) - reach) / index_cell_m));
-    const int y1 = std::min(index_h_ - 1, static_cast<int>((std::max(seg.a.y(), seg.b.y()) + reach) / index_cell_m));
+    const int x0 =
+        std::max(0, static_cast<int>((std::min(seg.a.x(), seg.b.x()) - reach) / index_cell_m));
+    const int x1 = std::min(
+        index_w_ - 1, static_cast<int>((std::max(seg.a.x(), seg.b.x()) + reach) / index_cell_m));
+    const int y0 =
+        std::max(0, static_cast<int>((std::min(seg.a.y(), seg.b.y()) - reach) / index_cell_m));
+    const int y1 = std::min(
+        index_h_ - 1, static_cast<int>((std::max(seg.a.y(), seg.b.y()) + reach) / index_cell_m));
     for (int y = y0; y <= y1; ++y) {
       for (int x = x0; x <= x1; ++x) {
         const vec2 centre{(x + 0.5) * index_cell_m, (y + 0.5) * index_cell_m};
-        if ((seg.closest_point(centre) - centre).norm() <= reach) cells[y * index_w_ + x].push_back(s);
+        if ((seg.closest_point(centre) - centre).norm() <= reach)
+          cells[y * index_w_ + x].push_back(s);
       }
     }
   }
@@ -169,6 +196,21 @@ void station::build_grid() {
       near_wall_[c] = clearance < settings_.wall_band_m;
     }
   }
+  // Walls have no thickness: cells on both sides of one can both be free, so every grid
+  // edge is checked against the walls it might cross.
+  edge_blocked_.assign(blocked_.size(), 0);
+  for (int y = 0; y < grid_h_; ++y) {
+    for (int x = 0; x < grid_w_; ++x) {
+      const auto c = static_cast<std::size_t>(y * grid_w_ + x);
+      if (!near_wall_[c]) continue;
+      const vec2 centre{(x + 0.5) * settings_.cell_m, (y + 0.5) * settings_.cell_m};
+      for (int d = 0; d < 8; ++d) {
+        const vec2 other{(x + step_x[d] + 0.5) * settings_.cell_m,
+                         (y + step_y[d] + 0.5) * settings_.cell_m};
+        if (!line_clear(centre, other)) edge_blocked_[c] |= static_cast<std::uint8_t>(1u << d);
+      }
+    }
+  }
 }
 
 std::vector<float> station::dijkstra(const std::vector<int>& sources) const {
@@ -188,20 +230,21 @@ std::vector<float> station::dijkstra(const std::vector<int>& sources) const {
     if (d > distance[c]) continue;
     const int cx = c % grid_w_;
     const int cy = c / grid_w_;
-    for (int dy = -1; dy <= 1; ++dy) {
-      for (int dx = -1; dx <= 1; ++dx) {
-        if (dx == 0 && dy == 0) continue;
+    for (int direction = 0; direction < 8; ++direction) {
+      {
+        const int dx = step_x[direction];
+        const int dy = step_y[direction];
         const int nx = cx + dx;
         const int ny = cy + dy;
         if (nx < 0 || ny < 0 || nx >= grid_w_ || ny >= grid_h_) continue;
         const int n = ny * grid_w_ + nx;
-        if (blocked_[n]) continue;
+        if (blocked_[n] || (edge_blocked_[c] & (1u << direction))) continue;
         // No corner cutting: a diagonal step needs both side cells free.
-        if (dx != 0 && dy != 0 &&
-            (blocked_[cy * grid_w_ + nx] || blocked_[ny * grid_w_ + cx])) {
+        if (dx != 0 && dy != 0 && (blocked_[cy * grid_w_ + nx] || blocked_[ny * grid_w_ + cx])) {
           continue;
         }
-        const float step = (dx != 0 && dy != 0 ? diagonal : cell) * (near_wall_[n] ? 1.0f + penalty : 1.0f);
+        const float step =
+            (dx != 0 && dy != 0 ? diagonal : cell) * (near_wall_[n] ? 1.0f + penalty : 1.0f);
         if (d + step < distance[n]) {
           distance[n] = d + step;
           open.push({distance[n], n});
@@ -281,12 +324,13 @@ void station::build_fields() {
     }
     fields_.push_back(dijkstra(sources));
     const auto& field = fields_.back();
-    const auto reached = std::count_if(field.begin(), field.end(), [](float d) { return d < unreachable; });
+    const auto reached =
+        std::count_if(field.begin(), field.end(), [](float d) { return d < unreachable; });
     // A target cut off from most of the floor means a wall closes a portal by mistake.
     if (reached * 2 < free_cells) {
-      throw std::invalid_argument(fmt::format(
-          "{}: '{}' is reachable from only {} of {} walkable navigation cells",
-          plan_.source_path, name, reached, free_cells));
+      throw std::invalid_argument(
+          fmt::format("{}: '{}' is reachable from only {} of {} walkable navigation cells",
+                      plan_.source_path, name, reached, free_cells));
     }
   }
 }
@@ -310,6 +354,7 @@ double station::distance_to(int field, const vec2& p) const {
       const float v = field_at(field, cx + dx, cy + dy);
       if (v == unreachable) continue;
       const vec2 centre{(cx + dx + 0.5) * settings_.cell_m, (cy + dy + 0.5) * settings_.cell_m};
+      if (near_wall_[c] && !line_clear(p, centre)) continue;
       best = std::min(best, static_cast<double>(v) + (centre - p).norm());
     }
   }
@@ -330,7 +375,13 @@ vec2 station::direction_to(int field, const vec2& p) const {
   const double f10 = field_at(field, x0 + 1, y0);
   const double f01 = field_at(field, x0, y0 + 1);
   const double f11 = field_at(field, x0 + 1, y0 + 1);
-  if (std::isfinite(f00) && std::isfinite(f10) && std::isfinite(f01) && std::isfinite(f11)) {
+  // Only away from walls: a stencil straddling a wall would point through it.
+  auto open_cell = [&](int x, int y) {
+    return x >= 0 && y >= 0 && x < grid_w_ && y < grid_h_ && !near_wall_[y * grid_w_ + x];
+  };
+  if (std::isfinite(f00) && std::isfinite(f10) && std::isfinite(f01) && std::isfinite(f11) &&
+      open_cell(x0, y0) && open_cell(x0 + 1, y0) && open_cell(x0, y0 + 1) &&
+      open_cell(x0 + 1, y0 + 1)) {
     const vec2 gradient{((f10 - f00) * (1.0 - ty) + (f11 - f01) * ty) / cell,
                         ((f01 - f00) * (1.0 - tx) + (f11 - f10) * tx) / cell};
     const double norm = gradient.norm();
@@ -341,13 +392,15 @@ vec2 station::direction_to(int field, const vec2& p) const {
   const int cx = c % grid_w_;
   const int cy = c / grid_w_;
   for (int r = 1; r <= 3; ++r) {
-    double best = field_at(field, cx, cy);
+    const vec2 own_centre{(cx + 0.5) * cell, (cy + 0.5) * cell};
+    double best = line_clear(p, own_centre) ? static_cast<double>(field_at(field, cx, cy))
+                                            : std::numeric_limits<double>::infinity();
     vec2 best_centre = p;
     for (int y = cy - r; y <= cy + r; ++y) {
       for (int x = cx - r; x <= cx + r; ++x) {
         const double v = field_at(field, x, y);
         const vec2 centre{(x + 0.5) * cell, (y + 0.5) * cell};
-        if (v < best) {
+        if (v < best && line_clear(p, centre)) {
           best = v;
           best_centre = centre;
         }

@@ -76,6 +76,10 @@ class station {
   /// cells and clear of every wall.
   bool fits(const vec2& p, double radius_m) const;
 
+  /// Whether the straight line from `a` to `b` (at most segment_reach_m long) crosses no
+  /// solid segment.
+  bool line_clear(const vec2& a, const vec2& b) const;
+
   /// Ticket booths then vending machines, numbered together as "counters".
   std::size_t counter_count() const noexcept { return counters_.size(); }
   /// Counter `index` (booths first).
@@ -132,6 +136,8 @@ class station {
   int grid_h_ = 0;
   std::vector<std::uint8_t> blocked_;
   std::vector<std::uint8_t> near_wall_;
+  // Bit d set: the grid edge from this cell in direction d (of the 8) crosses a wall.
+  std::vector<std::uint8_t> edge_blocked_;
   std::vector<std::vector<float>> fields_;
   std::vector<int> field_base_;  // first field of each target_kind
 };

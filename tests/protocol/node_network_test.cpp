@@ -1,0 +1,130 @@
+// The network side of camera nodes over an ideal network (no loss, one tick per hop): hop
+// limit, broadcast reach, no storm, neighbour discovery.
+
+#include "protocol/node_network.hpp"
+
+#include <gtest/gtest.h>
+
+#include <map>
+#include <set>
+
+#include "protocol/topology.hpp"
+
+namespace argus::protocol {
+namespace {
+
+// Cameras 10 m apart on a line, range 15 m: 1-2-3-4-5-6, each linked to its next.
+config::scenario line_of(int n) {
+  config::scenario s;
+  for (int i = 1; i <= n; ++i) {
+    config::camera_settings c;
+    c.id = i;
+    c.position = {10.0 * i, 0.0};
+    s.cameras.push_back(c);
+  }
+  s.network.communication_range_m = 15.0;
+  return s;
+}
+
+struct ideal_network {
+  explicit ideal_network(const config::scenario& s) : topo(s) {
+    for (int n : topo.nodes()) nodes.emplace(n, node_network(n, topo.neighbours(n), s));
+  }
+
+  // One tick: every node runs, then what it sent arrives at the next tick.
+  void step(std::int64_t tick) {
+    for (auto& [id, node] : nodes) {
+      if (down.count(id) != 0) continue;
+      for (auto& [from, m] : inbox[id]) node.receive(tick, from, m);
+      inbox[id].clear();
+      node.tick(tick);
+      for (auto& out : node.take_outgoing()) {
+        ++transmissions[out.message.kind];
+        auto m = out.message;
+        ++m.hops;
+        next[out.neighbour].emplace_back(id, m);
+      }
+      for (auto& m : node.take_delivered()) delivered[id].push_back(m);
+      for (auto& c : node.take_changes()) changes[id].push_back(c);
+    }
+    for (auto& [id, list] : next)
+      for (auto& x : list) inbox[id].push_back(std::move(x));
+    next.clear();
+  }
+
+  void run(std::int64_t from, std::int64_t to) {
+    for (auto t = from; t < to; ++t) step(t);
+  }
+
+  topology topo;
+  std::map<int, node_network> nodes;
+  std::set<int> down;
+  std::map<int, std::vector<std::pair<int, net_message>>> inbox, next;
+  std::map<int, std::vector<net_message>> delivered;
+  std::map<int, std::vector<neighbour_change>> changes;
+  std::map<std::string, int> transmissions;
+};
+
+TEST(node_network, discovers_its_neighbours_by_hello_and_forgets_silent_ones) {
+  ideal_network net(line_of(3));
+  net.run(0, 30);  // two heartbeats at 15 Hz
+  EXPECT_EQ(net.nodes.at(2).live_neighbours(), (std::vector<int>{1, 3}));
+  EXPECT_EQ(net.nodes.at(1).live_neighbours(), (std::vector<int>{2}));
+  net.down.insert(3);
+  net.run(30, 30 + 15 * 4);  // last heard at tick 28; member failure timeout: 5 s
+  EXPECT_EQ(net.nodes.at(2).live_neighbours(), (std::vector<int>{1, 3}));  // not yet
+  net.run(30 + 15 * 4, 30 + 15 * 7);
+  EXPECT_EQ(net.nodes.at(2).live_neighbours(), (std::vector<int>{1}));
+  ASSERT_FALSE(net.changes[2].empty());
+  EXPECT_EQ(net.changes[2].back().neighbour, 3);
+  EXPECT_FALSE(net.changes[2].back().up);
+  net.down.erase(3);  // it comes back and is heard again
+  net.run(30 + 15 * 7, 30 + 15 * 9);
+  EXPECT_EQ(net.nodes.at(2).live_neighbours(), (std::vector<int>{1, 3}));
+}
+
+TEST(node_network, unicast_reaches_a_node_three_hops_away_but_not_four) {
+  ideal_network net(line_of(6));
+  net.run(0, 30);
+  net.nodes.at(1).send(4, "ping", "three hops");
+  net.nodes.at(1).send(5, "ping", "four hops");
+  net.run(30, 60);
+  ASSERT_EQ(net.delivered[4].size(), 1u);
+  EXPECT_EQ(net.delivered[4][0].body, "three hops");
+  EXPECT_EQ(net.delivered[4][0].hops, 3);
+  EXPECT_TRUE(net.delivered[5].empty());
+  // Nodes on the way forward it but do not consume it.
+  EXPECT_TRUE(net.delivered[2].empty());
+  EXPECT_TRUE(net.delivered[3].empty());
+}
+
+TEST(node_network, broadcast_reaches_exactly_the_nodes_within_the_hop_limit) {
+  ideal_network net(line_of(6));
+  net.run(0, 30);
+  net.nodes.at(2).send(broadcast, "query", "");
+  net.run(30, 60);
+  std::set<int> got;
+  for (auto& [id, list] : net.delivered)
+    for (auto& m : list)
+      if (m.kind == "query") got.insert(id);
+  EXPECT_EQ(got, (std::set<int>{1, 3, 4, 5}));  // 6 is four hops from 2
+}
+
+TEST(node_network, flooding_sends_each_message_at_most_once_per_link_direction) {
+  // A full mesh of 8 nodes: the worst case for a storm.
+  auto s = line_of(8);
+  s.network.communication_range_m = 1000.0;
+  ideal_network net(s);
+  net.run(0, 30);
+  net.transmissions.clear();
+  net.nodes.at(1).send(broadcast, "query", "");
+  net.run(30, 60);
+  // 28 links, two directions: never more than 56 transmissions, whatever the hop limit.
+  EXPECT_LE(net.transmissions["query"], 56);
+  std::size_t receivers = 0;
+  for (auto& [id, list] : net.delivered) receivers += list.size();
+  EXPECT_EQ(receivers, 7u);  // once each, duplicates suppressed
+}
+
+}  // namespace
+}  // namespace argus::protocol

@@ -1,0 +1,83 @@
+// Output helpers: the trajectories CSV and the plan-view PNG (Fig. 1 look-alike).
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <sstream>
+#include <string>
+
+#include "config/scenario_loader.hpp"
+#include "world/crowd.hpp"
+#include "world/layout_loader.hpp"
+#include "world/plan_view.hpp"
+#include "world/trajectory_writer.hpp"
+
+namespace argus::world {
+namespace {
+
+std::filesystem::path penn_scenario() {
+  return std::filesystem::path{ARGUS_SOURCE_DIR} / "scenarios" / "penn_station.yaml";
+}
+
+TEST(trajectory_writer, writes_header_and_one_row_per_pedestrian) {
+  auto where = station::load(builtin_layout_path());
+  crowd_settings settings;
+  settings.population = 20;
+  crowd world(where, settings);
+  std::ostringstream csv;
+  trajectory_writer writer(csv);
+  world.step();
+  writer.write(*world.current());
+  std::istringstream lines(csv.str());
+  std::string line;
+  std::getline(lines, line);
+  EXPECT_EQ(line, "tick,t,id,x,y,vx,vy,heading,activity");
+  int rows = 0;
+  while (std::getline(lines, line)) {
+    ++rows;
+    EXPECT_EQ(std::count(line.begin(), line.end(), ','), 8) << line;
+    EXPECT_EQ(line.rfind("1,0.06666666666666667,", 0), 0u) << line;
+  }
+  EXPECT_EQ(rows, static_cast<int>(world.current()->pedestrians().size()));
+}
+
+TEST(trail_recorder, keeps_only_the_trail_length) {
+  auto where = station::load(builtin_layout_path());
+  crowd_settings settings;
+  settings.population = 5;
+  crowd world(where, settings);
+  trail_recorder trails(std::chrono::duration<double>{1.0});
+  for (int k = 0; k < 60; ++k) {
+    world.step();
+    trails.record(*world.current());
+  }
+  ASSERT_FALSE(trails.trails().empty());
+  for (const auto& [id, trail] : trails.trails()) EXPECT_LE(trail.size(), 16u) << id;
+}
+
+TEST(plan_view, draws_the_station_with_cameras_and_pedestrians) {
+  const auto scenario = config::load_scenario(penn_scenario());
+  auto where = station::load(layout_path(scenario));
+  auto settings = crowd_settings::from(scenario);
+  crowd world(where, settings);
+  trail_recorder trails(std::chrono::duration<double>{20.0});
+  for (int k = 0; k < 15 * 60; ++k) {
+    world.step();
+    trails.record(*world.current());
+  }
+  const auto out = std::filesystem::path{testing::TempDir()} / "penn_station_plan.png";
+  write_plan_view(out, *where, scenario.cameras, world.current().get(), &trails.trails());
+  std::printf("[ plan     ] %s\n", out.c_str());
+  const cv::Mat image = cv::imread(out.string());
+  ASSERT_FALSE(image.empty());
+  EXPECT_EQ(image.cols, 200 * 7 + 48);
+  EXPECT_EQ(image.rows, 100 * 7 + 48);
+  // Portals are yellow (BGR 0, 215, 255): the arcade's street portal centre is.
+  const cv::Vec3b portal = image.at<cv::Vec3b>(24 + (100 - 50) * 7, 24 + 199 * 7);
+  EXPECT_EQ(portal, cv::Vec3b(0, 215, 255));
+}
+
+}  // namespace
+}  // namespace argus::world

@@ -1,0 +1,74 @@
+// Snapshots: id order, neighbour index, line ranks by (join tick, id), seat holder by lowest id.
+#include "world/snapshot.hpp"
+
+#include <gtest/gtest.h>
+
+#include "world/layout_loader.hpp"
+#include "world/station.hpp"
+
+namespace argus::world {
+namespace {
+
+const station& penn() {
+  static const auto shared = station::load(builtin_layout_path());
+  return *shared;
+}
+
+pedestrian_state at(int id, double x, double y) {
+  pedestrian_state p;
+  p.id = id;
+  p.position = {x, y};
+  return p;
+}
+
+TEST(snapshot, sorts_by_id_and_finds) {
+  snapshot s(penn(), 3, std::chrono::duration<double>{0.2},
+             {at(5, 100, 50), at(2, 90, 50), at(9, 10, 10)});
+  ASSERT_EQ(s.pedestrians().size(), 3u);
+  EXPECT_EQ(s.pedestrians()[0].id, 2);
+  EXPECT_EQ(s.pedestrians()[2].id, 9);
+  ASSERT_NE(s.find(5), nullptr);
+  EXPECT_EQ(s.find(5)->position.x(), 100.0);
+  EXPECT_EQ(s.find(4), nullptr);
+}
+
+TEST(snapshot, neighbours_cover_two_metres) {
+  snapshot s(penn(), 1, std::chrono::duration<double>{0.0},
+             {at(1, 100, 50), at(2, 101.9, 50), at(3, 100, 51.95), at(4, 104.5, 50)});
+  std::vector<int> seen;
+  s.for_each_near({100.0, 50.0}, [&](const pedestrian_state& p) { seen.push_back(p.id); });
+  std::sort(seen.begin(), seen.end());
+  EXPECT_EQ(seen, (std::vector<int>{1, 2, 3}));
+}
+
+TEST(snapshot, lines_are_ranked_by_join_tick_then_id) {
+  auto a = at(7, 80, 86);
+  a.counter = 0;
+  a.queue_join_tick = 10;
+  auto b = at(3, 80, 85);
+  b.counter = 0;
+  b.queue_join_tick = 12;
+  auto c = at(4, 80, 84);
+  c.counter = 0;
+  c.queue_join_tick = 12;
+  snapshot s(penn(), 20, std::chrono::duration<double>{0.0}, {a, b, c});
+  EXPECT_EQ(s.queue_length(0), 3u);
+  EXPECT_EQ(s.queue_rank(0, 10, 7), 0u);
+  EXPECT_EQ(s.queue_rank(0, 12, 3), 1u);
+  EXPECT_EQ(s.queue_rank(0, 12, 4), 2u);
+  EXPECT_EQ(s.queue_rank(0, 21, 1), 3u);  // a newcomer queues behind everyone
+  EXPECT_EQ(s.queue_length(1), 0u);
+}
+
+TEST(snapshot, a_seat_belongs_to_the_lowest_claimant) {
+  auto a = at(8, 80, 20);
+  a.seat = 4;
+  auto b = at(6, 82, 20);
+  b.seat = 4;
+  snapshot s(penn(), 1, std::chrono::duration<double>{0.0}, {a, b});
+  EXPECT_EQ(s.seat_holder(4), 6);
+  EXPECT_EQ(s.seat_holder(5), -1);
+}
+
+}  // namespace
+}  // namespace argus::world
