@@ -1,5 +1,7 @@
 #include "actors/camera_node.hpp"
 
+#include <vector>
+
 #include "actors/ordered_inbox.hpp"
 #include "actors/participant_ids.hpp"
 #include "actors/tick_context.hpp"
@@ -12,7 +14,7 @@ namespace {
 
 struct arrival {
   int from = 0;
-  protocol::net_message message;
+  std::vector<protocol::net_message> messages;
 };
 
 struct camera_node_state {
@@ -34,20 +36,24 @@ std::vector<int> neighbours_of(const link_directory& links) {
 
 void flush_network(caf::stateful_actor<camera_node_state>* self, tick_context& ctx) {
   auto& st = self->state;
-  for (auto& out : st.network->take_outgoing()) {
-    auto it = st.links.find(out.neighbour);
+  // One CAF message per link per tick, however many network messages it carries.
+  std::map<int, std::vector<protocol::net_message>> by_link;
+  for (auto& out : st.network->take_outgoing())
+    by_link[out.neighbour].push_back(std::move(out.message));
+  for (auto& [neighbour, batch] : by_link) {
+    auto it = st.links.find(neighbour);
     if (it == st.links.end()) continue;
     mail_stamp stamp{ctx.tick(), static_cast<std::uint8_t>(phase::cameras), st.info.id,
                      st.mail_seq++};
-    self->send(it->second.handle, net_send_atom_v, stamp, st.camera_id, std::move(out.message));
+    self->send(it->second.handle, net_send_atom_v, stamp, st.camera_id, std::move(batch));
     ctx.sent_mail_to(it->second.participant);
   }
   for (const auto& change : st.network->take_changes())
     ctx.emit(change.up ? "neighbour_up" : "neighbour_lost",
              fmt::format(R"("camera":{},"neighbour":{})", st.camera_id, change.neighbour));
-  for (const auto& m : st.network->take_delivered())
-    ctx.emit("net_received", fmt::format(R"("camera":{},"origin":{},"message":"{}","hops":{})",
-                                         st.camera_id, m.origin, m.kind, m.hops));
+  for (const auto& f : st.network->take_failures())
+    ctx.emit("peer_failed",
+             fmt::format(R"("camera":{},"peer":{},"request":"{}")", st.camera_id, f.peer, f.kind));
 }
 
 caf::behavior camera_node(caf::stateful_actor<camera_node_state>* self,
@@ -60,8 +66,9 @@ caf::behavior camera_node(caf::stateful_actor<camera_node_state>* self,
   st.network = std::make_unique<protocol::node_network>(camera.id, neighbours_of(links), scenario);
   st.links = std::move(links);
   return {
-      [self](net_deliver_atom, const mail_stamp& stamp, int from, protocol::net_message& m) {
-        self->state.arrivals.put(stamp, arrival{from, std::move(m)});
+      [self](net_deliver_atom, const mail_stamp& stamp, int from,
+             std::vector<protocol::net_message>& batch) {
+        self->state.arrivals.put(stamp, arrival{from, std::move(batch)});
       },
       [self](tick_atom, std::int64_t tick, std::uint8_t p) {
         auto& st = self->state;
@@ -72,7 +79,14 @@ caf::behavior camera_node(caf::stateful_actor<camera_node_state>* self,
                                           st.ptz ? "ptz" : "static"));
         }
         for (auto& [stamp, a] : st.arrivals.take_due(tick, p))
-          st.network->receive(tick, a.from, a.message);
+          for (const auto& m : a.messages) st.network->receive(tick, a.from, m);
+        for (const auto& m : st.network->take_delivered()) {
+          // A liveness probe any node may send; the controller's messages come with it.
+          if (m.kind == "ping") st.network->reply(m, "pong", {});
+          ctx.emit("net_received",
+                   fmt::format(R"("camera":{},"origin":{},"message":"{}","hops":{})", st.camera_id,
+                               m.origin, m.kind, m.hops));
+        }
         st.network->tick(tick);
         flush_network(self, ctx);
         self->send(caf::actor_cast<caf::actor>(self->current_sender()), std::move(ctx).finish());

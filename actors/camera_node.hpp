@@ -30,7 +30,8 @@ participant_info camera_participant(const config::camera_settings& camera);
 /// Today the node announces itself (`node_up`) on its first tick and runs its network side
 /// (`protocol::node_network`): hello beacons, neighbour discovery (`neighbour_up`,
 /// `neighbour_lost` events) and multi-hop forwarding. Mail: `(net_deliver_atom, mail_stamp,
-/// int from_node, net_message)` from its links. Sensing (vision/), the controller FSM of
+/// int from_node, std::vector<net_message>)` from its links; it sends one `net_send_atom`
+/// batch per link per tick. Sensing (vision/), the controller FSM of
 /// Fig. 10 and the grouping protocol are not in it yet.
 caf::actor spawn_camera_node(caf::actor_system& system, const config::scenario& scenario,
                              const config::camera_settings& camera, link_directory links);

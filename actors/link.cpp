@@ -1,7 +1,9 @@
 #include "actors/link.hpp"
 
 #include <map>
+#include <optional>
 #include <tuple>
+#include <vector>
 
 #include "actors/ordered_inbox.hpp"
 #include "actors/participant_ids.hpp"
@@ -25,22 +27,41 @@ struct in_transit {
   protocol::net_message message;
 };
 
+// Mail to a link: the messages one endpoint sent in one turn, or a command. One inbox for
+// both, so that a cut, a heal or a burst takes effect between exactly the messages sent
+// before and after it.
+struct link_input {
+  std::optional<link_command> command;
+  int from = 0;
+  std::vector<protocol::net_message> messages;
+};
+
 struct link_state {
   participant_info info;
   std::array<endpoint, 2> ends;
   std::unique_ptr<protocol::link_model> model;
   bool reorder = false;
-  ordered_inbox<in_transit> outgoing;
-  ordered_inbox<link_command> commands;
-  // Pending deliveries by (due tick, order of acceptance): a deterministic order.
-  std::map<std::pair<std::int64_t, std::uint64_t>, in_transit> pending;
-  std::uint64_t accepted = 0;
+  ordered_inbox<link_input> inbox;
+  // Pending deliveries by due tick, each tick's in order of acceptance: a deterministic order.
+  std::map<std::int64_t, std::vector<in_transit>> pending;
   std::array<std::int64_t, 2> last_due{0, 0};  // per direction, for FIFO delivery
   bool cut = false;
   double burst_loss = 0.0;
   std::int64_t burst_until = -1;
   std::uint64_t delivered_seq = 0;
   protocol::accounting_by_kind counts;
+  // Most traffic is of one kind at a time: skip the string-keyed lookup when it repeats.
+  const std::string* last_kind = nullptr;
+  protocol::message_counts* last_counts = nullptr;
+
+  protocol::message_counts& counter(const std::string& kind) {
+    if (last_kind == nullptr || *last_kind != kind) {
+      auto it = counts.try_emplace(kind).first;
+      last_kind = &it->first;
+      last_counts = &it->second;
+    }
+    return *last_counts;
+  }
 };
 
 std::size_t end_of(const link_state& st, int node) {
@@ -76,7 +97,7 @@ void apply(link_state& st, const link_command& cmd) {
 
 // `sent_tick` is when the endpoint sent it: the delay counts from then.
 void accept(link_state& st, std::int64_t sent_tick, in_transit t) {
-  auto& c = st.counts[t.message.kind];
+  auto& c = st.counter(t.message.kind);
   ++c.sent;
   if (st.cut) {
     ++c.lost;
@@ -95,32 +116,42 @@ void accept(link_state& st, std::int64_t sent_tick, in_transit t) {
   if (fate.duplicated) {
     ++c.duplicated;
     auto dup_due = std::max(due, sent_tick + fate.duplicate_delay_ticks);
-    st.pending.emplace(std::make_pair(dup_due, st.accepted++), t);
+    st.pending[dup_due].push_back(t);
   }
-  st.pending.emplace(std::make_pair(due, st.accepted++), std::move(t));
+  st.pending[due].push_back(std::move(t));
 }
 
+// Hands over everything due by now: one CAF message per receiving end per tick, whatever
+// the number of network messages in it.
 void deliver_due(caf::stateful_actor<link_state>* self, tick_context& ctx) {
   auto& st = self->state;
-  while (!st.pending.empty() && st.pending.begin()->first.first <= ctx.tick()) {
-    auto t = std::move(st.pending.begin()->second);
+  std::array<std::vector<protocol::net_message>, 2> out;
+  while (!st.pending.empty() && st.pending.begin()->first <= ctx.tick()) {
+    auto due = std::move(st.pending.begin()->second);
     st.pending.erase(st.pending.begin());
-    auto& c = st.counts[t.message.kind];
-    if (st.cut) {
-      ++c.lost;  // the cut caught it on the wire
-      continue;
+    for (auto& t : due) {
+      auto& c = st.counter(t.message.kind);
+      if (st.cut) {
+        ++c.lost;  // the cut caught it on the wire
+        continue;
+      }
+      auto to = 1 - end_of(st, t.from);
+      if (!st.ends[to].up) {
+        ++c.dropped;
+        continue;
+      }
+      ++c.delivered;
+      ++t.message.hops;
+      out[to].push_back(std::move(t.message));
     }
-    auto& to = st.ends[1 - end_of(st, t.from)];
-    if (!to.up) {
-      ++c.dropped;
-      continue;
-    }
-    ++c.delivered;
-    ++t.message.hops;
+  }
+  for (std::size_t to = 0; to < 2; ++to) {
+    if (out[to].empty()) continue;
+    const auto& end = st.ends[to];
     mail_stamp stamp{ctx.tick(), static_cast<std::uint8_t>(phase::network), st.info.id,
                      st.delivered_seq++};
-    self->send(to.handle, net_deliver_atom_v, stamp, t.from, std::move(t.message));
-    ctx.sent_mail_to(participant_ids::camera(to.node));
+    self->send(end.handle, net_deliver_atom_v, stamp, st.ends[1 - to].node, std::move(out[to]));
+    ctx.sent_mail_to(participant_ids::camera(end.node));
   }
 }
 
@@ -135,26 +166,34 @@ caf::behavior link(caf::stateful_actor<link_state>* self, participant_info info,
   st.model = std::make_unique<protocol::link_model>(network, tick_seconds,
                                                     config::derive_seed(seed, st.info.id));
   return {
-      [self](net_send_atom, const mail_stamp& stamp, int from, protocol::net_message& m) {
-        self->state.outgoing.put(stamp, in_transit{from, std::move(m)});
+      [self](net_send_atom, const mail_stamp& stamp, int from,
+             std::vector<protocol::net_message>& batch) {
+        self->state.inbox.put(stamp, link_input{std::nullopt, from, std::move(batch)});
       },
       [self](link_cmd_atom, const mail_stamp& stamp, link_command& cmd) {
-        self->state.commands.put(stamp, std::move(cmd));
+        self->state.inbox.put(stamp, link_input{std::move(cmd), 0, {}});
       },
       [self](tick_atom, std::int64_t tick, std::uint8_t p) {
         auto& st = self->state;
         tick_context ctx(st.info.id, st.info.name, tick, st.info.tick_phase);
-        for (auto& [stamp, cmd] : st.commands.take_due(tick, p)) apply(st, cmd);
-        for (auto& [stamp, t] : st.outgoing.take_due(tick, p)) accept(st, stamp.tick, std::move(t));
+        for (auto& [stamp, input] : st.inbox.take_due(tick, p)) {
+          if (input.command) {
+            apply(st, *input.command);
+            continue;
+          }
+          for (auto& m : input.messages)
+            accept(st, stamp.tick, in_transit{input.from, std::move(m)});
+        }
         deliver_due(self, ctx);
-        if (!st.pending.empty()) ctx.wake_at(st.pending.begin()->first.first);
+        if (!st.pending.empty()) ctx.wake_at(st.pending.begin()->first);
         if (st.burst_until > tick) ctx.wake_at(st.burst_until);
         self->send(caf::actor_cast<caf::actor>(self->current_sender()), std::move(ctx).finish());
       },
       [self](report_atom) {
         auto& st = self->state;
         auto counts = st.counts;
-        for (const auto& [key, t] : st.pending) ++counts[t.message.kind].in_flight;
+        for (const auto& [due, list] : st.pending)
+          for (const auto& t : list) ++counts[t.message.kind].in_flight;
         return link_report{st.info.name, std::move(counts)};
       },
   };

@@ -25,5 +25,13 @@ constexpr std::uint64_t link(std::size_t index) noexcept {
   return 2'000'000'000ULL + static_cast<std::uint64_t>(index);
 }
 
+/// The world coordinator: gathers the crowd partitions' results, spawns, publishes snapshots.
+inline constexpr std::uint64_t world_coordinator = 3;
+
+/// Crowd partition number `index` (vertical strips, west to east).
+constexpr std::uint64_t crowd_partition(std::size_t index) noexcept {
+  return 3'000'000'000ULL + static_cast<std::uint64_t>(index);
+}
+
 }  // namespace participant_ids
 }  // namespace argus::actors

@@ -14,7 +14,9 @@
 #include "actors/scenario_script.hpp"
 #include "actors/system_config.hpp"
 #include "actors/type_ids.hpp"
+#include "actors/world_coordinator.hpp"
 #include "protocol/topology.hpp"
+#include "world/layout_loader.hpp"
 
 namespace argus::actors {
 
@@ -84,6 +86,13 @@ run_outcome run_scenario(const config::scenario& scenario, bool show_progress) {
   caf::anon_send(clock, join_atom_v, script, script_participant());
   auto faults = spawn_fault_injector(system, scenario, clock, std::move(net));
   caf::anon_send(clock, join_atom_v, faults, fault_injector_participant(scenario));
+  world_run_settings world_settings;
+  world_settings.station = world::station::load(world::layout_path(scenario));
+  world_settings.crowd = world::crowd_settings::from(scenario);
+  world_settings.end_tick = cs.end_tick;
+  world_settings.trajectories = outcome.output_dir / "trajectories.csv";
+  for (auto& [handle, info] : spawn_world(system, std::move(world_settings)).participants)
+    caf::anon_send(clock, join_atom_v, handle, info);
 
   std::string failure;
   {

@@ -13,6 +13,7 @@
 #include "actors/run_result.hpp"
 #include "actors/sim_event.hpp"
 #include "actors/tick_ack.hpp"
+#include "actors/world_update.hpp"
 #include "caf/all.hpp"
 #include "protocol/net_message.hpp"
 
@@ -27,6 +28,9 @@ CAF_ADD_TYPE_ID(argus, (argus::actors::mail_stamp))
 CAF_ADD_TYPE_ID(argus, (argus::actors::link_command))
 CAF_ADD_TYPE_ID(argus, (argus::actors::link_report))
 CAF_ADD_TYPE_ID(argus, (argus::protocol::net_message))
+CAF_ADD_TYPE_ID(argus, (std::vector<argus::protocol::net_message>))
+CAF_ADD_TYPE_ID(argus, (argus::actors::world_update))
+CAF_ADD_TYPE_ID(argus, (argus::actors::partition_report))
 
 CAF_ADD_ATOM(argus, argus::actors, tick_atom, "tick")
 CAF_ADD_ATOM(argus, argus::actors, join_atom, "join")
@@ -41,5 +45,8 @@ CAF_ADD_ATOM(argus, argus::actors, report_atom, "report")
 CAF_ADD_ATOM(argus, argus::actors, net_send_atom, "net_send")
 CAF_ADD_ATOM(argus, argus::actors, net_deliver_atom, "net_dlvr")
 CAF_ADD_ATOM(argus, argus::actors, link_cmd_atom, "link_cmd")
+CAF_ADD_ATOM(argus, argus::actors, world_report_atom, "w_report")
+CAF_ADD_ATOM(argus, argus::actors, world_update_atom, "w_update")
+CAF_ADD_ATOM(argus, argus::actors, world_attach_atom, "w_attach")
 
 CAF_END_TYPE_ID_BLOCK(argus)

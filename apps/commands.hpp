@@ -10,6 +10,18 @@ enum exit_code : int { ok = 0, run_failed = 1, bad_input = 2 };
 /// Adds `argus run` to `app`; its callback sets `result` to the command's exit code.
 void add_run_command(CLI::App& app, int& result);
 
+/// Adds `argus plan` to `app`; its callback sets `result` to the command's exit code.
+void add_plan_command(CLI::App& app, int& result);
+
+/// Adds `argus render` (one camera's frame) to `app`; sets `result` to its exit code.
+void add_render_command(CLI::App& app, int& result);
+
+/// Adds `argus feeds` (a mosaic of every camera's view) to `app`; sets `result` to its exit code.
+void add_feeds_command(CLI::App& app, int& result);
+
+/// Adds `argus vision` (the low-level visual routines: `localize`) to `app`.
+void add_vision_command(CLI::App& app, int& result);
+
 /// Adds `argus validate` to `app`; its callback sets `result` to the command's exit code.
 void add_validate_command(CLI::App& app, int& result);
 

@@ -10,6 +10,10 @@ int main(int argc, char** argv) {
   int result = argus::apps::ok;
   argus::apps::add_run_command(app, result);
   argus::apps::add_validate_command(app, result);
+  argus::apps::add_plan_command(app, result);
+  argus::apps::add_render_command(app, result);
+  argus::apps::add_feeds_command(app, result);
+  argus::apps::add_vision_command(app, result);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

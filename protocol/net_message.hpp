@@ -17,6 +17,8 @@ struct net_message {
   int destination = broadcast;
   std::uint8_t hops = 0;
   std::uint8_t max_hops = 3;
+  /// The id of the request this message answers; 0 when it answers none.
+  std::uint64_t reply_to = 0;
   /// Message type as the paper names them: "queryrelevance", "relevance", "join", "status",
   /// "demote", ... and "hello" for neighbour discovery.
   std::string kind;
@@ -33,7 +35,7 @@ constexpr std::uint64_t make_message_id(int origin, std::uint32_t seq) noexcept 
 
 template <class Inspector>
 typename Inspector::result_type inspect(Inspector& f, net_message& x) {
-  return f(x.id, x.origin, x.destination, x.hops, x.max_hops, x.kind, x.body);
+  return f(x.id, x.origin, x.destination, x.hops, x.max_hops, x.reply_to, x.kind, x.body);
 }
 
 }  // namespace argus::protocol

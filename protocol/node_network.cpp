@@ -19,7 +19,8 @@ node_network::node_network(int self, std::vector<int> attached, const config::sc
       router_(self),
       max_hops_(static_cast<std::uint8_t>(std::min(255u, s.network.max_hops))),
       heartbeat_ticks_(ticks_of(s.controller.heartbeat_interval, s.run.tick)),
-      silence_ticks_(ticks_of(s.controller.member_failure_timeout, s.run.tick)) {
+      silence_ticks_(ticks_of(s.controller.member_failure_timeout, s.run.tick)),
+      timeout_ticks_(ticks_of(s.network.message_timeout, s.run.tick)) {
   std::sort(attached_.begin(), attached_.end());
 }
 
@@ -41,7 +42,9 @@ void node_network::refresh_live() {
 void node_network::receive(std::int64_t tick, int from, const net_message& m) {
   heard(tick, from);
   if (m.kind == "hello") return;  // its whole job was to be heard
-  route(m, router_.receive(m, from, live_));
+  auto d = router_.receive(m, from, live_);
+  if (d.deliver && m.reply_to != 0) open_requests_.erase(m.reply_to);
+  route(m, d);
 }
 
 void node_network::route(const net_message& m, const routing_decision& d) {
@@ -50,6 +53,14 @@ void node_network::route(const net_message& m, const routing_decision& d) {
 }
 
 void node_network::tick(std::int64_t tick) {
+  for (auto it = open_requests_.begin(); it != open_requests_.end();) {
+    if (tick > it->second.deadline) {
+      failures_.push_back({it->second.peer, it->first, std::move(it->second.kind)});
+      it = open_requests_.erase(it);
+    } else {
+      ++it;
+    }
+  }
   bool lost_any = false;
   for (auto it = last_heard_.begin(); it != last_heard_.end();) {
     if (tick - it->second > silence_ticks_) {
@@ -73,7 +84,7 @@ void node_network::tick(std::int64_t tick) {
   }
 }
 
-void node_network::send(int destination, std::string kind, std::string body) {
+std::uint64_t node_network::send(int destination, std::string kind, std::string body) {
   net_message m;
   m.id = make_message_id(self_, next_seq_++);
   m.origin = self_;
@@ -82,6 +93,28 @@ void node_network::send(int destination, std::string kind, std::string body) {
   m.kind = std::move(kind);
   m.body = std::move(body);
   route(m, router_.originate(m, live_));
+  return m.id;
+}
+
+std::uint64_t node_network::request(std::int64_t tick, int destination, std::string kind,
+                                    std::string body) {
+  auto k = kind;
+  auto id = send(destination, std::move(kind), std::move(body));
+  open_requests_[id] = {destination, tick + timeout_ticks_, std::move(k)};
+  return id;
+}
+
+std::uint64_t node_network::reply(const net_message& request, std::string kind, std::string body) {
+  net_message m;
+  m.id = make_message_id(self_, next_seq_++);
+  m.origin = self_;
+  m.destination = request.origin;
+  m.max_hops = max_hops_;
+  m.reply_to = request.id;
+  m.kind = std::move(kind);
+  m.body = std::move(body);
+  route(m, router_.originate(m, live_));
+  return m.id;
 }
 
 std::vector<outgoing_message> node_network::take_outgoing() {
@@ -92,6 +125,9 @@ std::vector<net_message> node_network::take_delivered() {
 }
 std::vector<neighbour_change> node_network::take_changes() {
   return std::exchange(changes_, {});
+}
+std::vector<peer_failure> node_network::take_failures() {
+  return std::exchange(failures_, {});
 }
 
 }  // namespace argus::protocol

@@ -23,6 +23,14 @@ struct neighbour_change {
   bool up = false;
 };
 
+/// A request that got no answer within the message timeout: its peer is taken as failed
+/// (Section IV-C: "communication failures are perceived as camera failures").
+struct peer_failure {
+  int peer = 0;
+  std::uint64_t request = 0;
+  std::string kind;
+};
+
 /// A camera node's view of the network, with no knowledge of positions or of the graph beyond
 /// its own links: neighbour discovery by `hello` beacons (one hop, every heartbeat interval),
 /// liveness by what it hears (a neighbour unheard for `member_failure_timeout` is given up, as
@@ -39,8 +47,15 @@ class node_network {
   /// Per-tick work after the arrivals: give up silent neighbours, send the hello beacon.
   void tick(std::int64_t tick);
 
-  /// Sends `kind`/`body` from this node to `destination` (or `broadcast`).
-  void send(int destination, std::string kind, std::string body);
+  /// Sends `kind`/`body` from this node to `destination` (or `broadcast`); returns its id.
+  std::uint64_t send(int destination, std::string kind, std::string body);
+
+  /// Sends a request that expects an answer from `destination` within the message timeout
+  /// (Table 2: 1500 ms); if none comes, `take_failures()` reports the peer. Returns its id.
+  std::uint64_t request(std::int64_t tick, int destination, std::string kind, std::string body);
+
+  /// Answers `request` (a delivered message) with `kind`/`body`.
+  std::uint64_t reply(const net_message& request, std::string kind, std::string body);
 
   /// What to put on links since the last call.
   std::vector<outgoing_message> take_outgoing();
@@ -48,6 +63,8 @@ class node_network {
   std::vector<net_message> take_delivered();
   /// Neighbour changes since the last call.
   std::vector<neighbour_change> take_changes();
+  /// Requests that timed out since the last call.
+  std::vector<peer_failure> take_failures();
 
   /// Live neighbours, sorted.
   const std::vector<int>& live_neighbours() const noexcept { return live_; }
@@ -66,6 +83,14 @@ class node_network {
   std::uint8_t max_hops_;
   std::int64_t heartbeat_ticks_;
   std::int64_t silence_ticks_;
+  std::int64_t timeout_ticks_;
+  struct open_request {
+    int peer = 0;
+    std::int64_t deadline = 0;
+    std::string kind;
+  };
+  std::map<std::uint64_t, open_request> open_requests_;
+  std::vector<peer_failure> failures_;
   std::uint32_t next_seq_ = 0;
   std::map<int, std::int64_t> last_heard_;
   std::vector<int> live_;

@@ -84,8 +84,11 @@ TEST(run_scenario, runs_the_script_crashes_and_recovers_cameras_and_writes_outpu
   auto summary = nlohmann::json::parse(summary_in);
   EXPECT_EQ(summary["ticks"], 60);
   EXPECT_EQ(summary["events_total"], events.size());
-  // 3 cameras, 3 links (all within range), the script, the fault injector, 1 recovered camera.
-  EXPECT_EQ(summary["participants"], 9);
+  // 3 cameras, 3 links (all within range), the script, the fault injector, 1 recovered camera,
+  // 1 crowd partition and the world coordinator.
+  EXPECT_EQ(summary["participants"], 11);
+  // The crowd's ground truth, one row per pedestrian per tick (ticks 0 to 60).
+  EXPECT_TRUE(std::filesystem::exists(dir / "trajectories.csv"));
   EXPECT_EQ(summary["network"]["links"], 3);
   EXPECT_GT(summary["network"]["totals"]["delivered"].get<int>(), 0);
   EXPECT_EQ(summary["network"]["invariant_holds"], true);

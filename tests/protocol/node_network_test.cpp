@@ -126,5 +126,31 @@ TEST(node_network, flooding_sends_each_message_at_most_once_per_link_direction) 
   EXPECT_EQ(receivers, 7u);  // once each, duplicates suppressed
 }
 
+TEST(node_network, a_request_unanswered_within_the_message_timeout_marks_the_peer_failed) {
+  ideal_network net(line_of(4));
+  net.run(0, 30);
+  // Answered: node 3 replies to whatever node 1 asks.
+  auto asked = net.nodes.at(1).request(30, 3, "ping", "");
+  for (std::int64_t t = 30; t < 60; ++t) {
+    net.step(t);
+    for (auto& m : net.delivered[3])
+      if (m.kind == "ping") net.nodes.at(3).reply(m, "pong", "");
+    net.delivered[3].clear();
+  }
+  EXPECT_TRUE(net.nodes.at(1).take_failures().empty());
+  ASSERT_FALSE(net.delivered[1].empty());
+  EXPECT_EQ(net.delivered[1].back().reply_to, asked);
+  // Unanswered: node 4 is down; 1500 ms at 15 Hz is 22.5 ticks, rounded to 23.
+  net.down.insert(4);
+  auto lost = net.nodes.at(1).request(60, 4, "ping", "");
+  net.run(60, 60 + 23);
+  EXPECT_TRUE(net.nodes.at(1).take_failures().empty());
+  net.run(60 + 23, 60 + 25);
+  auto failures = net.nodes.at(1).take_failures();
+  ASSERT_EQ(failures.size(), 1u);
+  EXPECT_EQ(failures[0].peer, 4);
+  EXPECT_EQ(failures[0].request, lost);
+}
+
 }  // namespace
 }  // namespace argus::protocol

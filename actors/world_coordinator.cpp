@@ -1,0 +1,217 @@
+#include "actors/world_coordinator.hpp"
+
+#include <fstream>
+#include <optional>
+#include <stdexcept>
+#include <system_error>
+
+#include "actors/crowd_partition.hpp"
+#include "actors/ordered_inbox.hpp"
+#include "actors/participant_ids.hpp"
+#include "actors/tick_context.hpp"
+#include "actors/type_ids.hpp"
+#include "fmt/format.h"
+#include "world/trajectory_writer.hpp"
+
+namespace argus::actors {
+namespace {
+
+struct trajectory_file {
+  std::filesystem::path final_path;
+  std::filesystem::path partial_path;
+  std::ofstream out;
+  std::optional<world::trajectory_writer> writer;
+};
+
+struct coordinator_setup {
+  std::shared_ptr<const world::station> station;
+  std::vector<world::partition_bounds> bounds;
+  world::spawner spawner;
+  double tick_s = 1.0 / 15.0;
+  std::shared_ptr<const world::snapshot> initial;
+  std::int64_t end_tick = 0;
+  /// Null for none; shared only to pass it into the actor.
+  std::shared_ptr<trajectory_file> trajectories;
+  std::vector<caf::actor> partitions;
+};
+
+struct world_coordinator_state {
+  participant_info info;
+  std::optional<coordinator_setup> setup;
+  std::shared_ptr<const world::snapshot> current;
+  ordered_inbox<partition_report> reports;
+  std::uint64_t sent = 0;
+};
+
+// Opens `<path>.partial` and writes the initial snapshot; throws when it cannot be written.
+std::shared_ptr<trajectory_file> open_trajectories(const std::filesystem::path& path) {
+  if (path.empty()) return nullptr;
+  auto file = std::make_shared<trajectory_file>();
+  file->final_path = path;
+  file->partial_path = path;
+  file->partial_path += ".partial";
+  std::error_code ignored;
+  if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path(), ignored);
+  file->out.open(file->partial_path, std::ios::binary | std::ios::trunc);
+  if (!file->out) throw std::runtime_error("cannot write " + file->partial_path.string());
+  file->writer.emplace(file->out);
+  return file;
+}
+
+// Appends `frame`; after the run's last snapshot the file gets its final name.
+void write_trajectories(std::shared_ptr<trajectory_file>& file, const world::snapshot& frame,
+                        std::int64_t end_tick) {
+  if (!file) return;
+  file->writer->write(frame);
+  if (static_cast<std::int64_t>(frame.tick()) < end_tick) return;
+  file->writer.reset();
+  file->out.close();
+  std::error_code ignored;
+  std::filesystem::rename(file->partial_path, file->final_path, ignored);
+  file.reset();
+}
+
+// The lean part of the world's events: entries, exits and completed goals.
+void emit_events(tick_context& ctx, const world::snapshot& frame) {
+  for (const auto& e : frame.events()) {
+    switch (e.kind) {
+      case world::event_kind::spawned:
+        ctx.emit("pedestrian_entered",
+                 fmt::format(R"("pedestrian":{},"at":{})", e.pedestrian, e.resource));
+        break;
+      case world::event_kind::left:
+        ctx.emit("pedestrian_left",
+                 fmt::format(R"("pedestrian":{},"at":{})", e.pedestrian, e.resource));
+        break;
+      case world::event_kind::goal_completed:
+        ctx.emit("goal_completed", fmt::format(R"("pedestrian":{},"goal":"{}")", e.pedestrian,
+                                               world::to_string(e.goal)));
+        break;
+      default:
+        break;
+    }
+  }
+}
+
+void step_world(caf::stateful_actor<world_coordinator_state>* self, tick_context& ctx,
+                std::vector<std::pair<mail_stamp, partition_report>> due) {
+  auto& st = self->state;
+  auto& setup = *st.setup;
+  const auto count = setup.bounds.size();
+  // Canonical order: by partition index, whatever order the reports arrived in.
+  std::vector<world::partition_result> results(count);
+  std::size_t reported = 0;
+  for (auto& [stamp, report] : due) {
+    if (report.index >= count) continue;
+    results[report.index] = std::move(report.result);
+    ++reported;
+  }
+  if (reported != count)
+    ctx.emit("world_partitions_missing",
+             fmt::format(R"("reported":{},"partitions":{})", reported, count));
+  const auto world_tick = st.current->tick() + 1;
+  std::vector<world::event> spawn_events;
+  const auto states = world::gather_states(results);
+  auto spawned = setup.spawner.spawn(*setup.station, states, world_tick, spawn_events);
+  st.current =
+      world::merge(*setup.station, world_tick,
+                   std::chrono::duration<double>{static_cast<double>(world_tick) * setup.tick_s},
+                   results, spawned, std::move(spawn_events));
+  write_trajectories(setup.trajectories, *st.current, setup.end_tick);
+  emit_events(ctx, *st.current);
+  // Redistribute in world::crowd::step's order: own, handed over, newcomers.
+  std::vector<std::vector<world::pedestrian>> owned(count);
+  for (std::size_t i = 0; i < count; ++i) owned[i] = std::move(results[i].pedestrians);
+  for (auto& r : results)
+    for (auto& p : r.handed_over)
+      owned[world::owner_of(setup.bounds, p.state.position)].push_back(std::move(p));
+  for (auto& p : spawned)
+    owned[world::owner_of(setup.bounds, p.state.position)].push_back(std::move(p));
+  for (std::size_t i = 0; i < count; ++i) {
+    mail_stamp stamp{ctx.tick(), static_cast<std::uint8_t>(st.info.tick_phase), st.info.id,
+                     st.sent++};
+    self->send(setup.partitions[i], world_update_atom_v, stamp,
+               world_update{st.current, std::move(owned[i])});
+    ctx.sent_mail_to(participant_ids::crowd_partition(i));
+  }
+}
+
+caf::behavior world_coordinator(caf::stateful_actor<world_coordinator_state>* self,
+                                coordinator_setup setup) {
+  auto& st = self->state;
+  st.info = world_coordinator_participant();
+  st.current = setup.initial;
+  st.setup.emplace(std::move(setup));
+  return {
+      [self](world_report_atom, const mail_stamp& stamp, partition_report& report) {
+        self->state.reports.put(stamp, std::move(report));
+      },
+      [self](tick_atom, std::int64_t tick, std::uint8_t p) {
+        auto& st = self->state;
+        tick_context ctx(st.info.id, st.info.name, tick, st.info.tick_phase);
+        auto due = st.reports.take_due(tick, p);
+        if (!due.empty()) step_world(self, ctx, std::move(due));
+        self->send(caf::actor_cast<caf::actor>(self->current_sender()), std::move(ctx).finish());
+      },
+  };
+}
+
+}  // namespace
+
+participant_info world_coordinator_participant() {
+  participant_info info;
+  info.id = participant_ids::world_coordinator;
+  info.name = "world";
+  info.tick_phase = phase::network;
+  info.mode = wake_mode::on_demand;
+  return info;
+}
+
+world_actors spawn_world(caf::actor_system& system, world_run_settings settings) {
+  const auto& cs = settings.crowd;
+  // The same checks and initial crowd as world::crowd's constructor.
+  if (cs.behaviour.tick_s <= 0.0 || cs.behaviour.tick_s > 0.25)
+    throw std::invalid_argument("world: tick must be in (0, 0.25] s");
+  world::spawner spawner({cs.run_seed, cs.population, cs.spawn_rate_per_min, cs.behaviour.tick_s});
+  auto bounds = world::vertical_strips(*settings.station, cs.partitions);
+  std::vector<world::event> events;
+  std::vector<world::pedestrian> initial;
+  if (cs.prefill) initial = spawner.populate(*settings.station, 0, events);
+  std::vector<std::vector<world::pedestrian>> owned(bounds.size());
+  std::vector<world::pedestrian_state> states;
+  for (auto& p : initial) {
+    states.push_back(p.state);
+    owned[world::owner_of(bounds, p.state.position)].push_back(std::move(p));
+  }
+  auto snapshot0 = std::make_shared<const world::snapshot>(*settings.station, 0,
+                                                           std::chrono::duration<double>{0.0},
+                                                           std::move(states), std::move(events));
+
+  auto trajectories = open_trajectories(settings.trajectories);
+  write_trajectories(trajectories, *snapshot0, settings.end_tick);
+
+  world_actors out;
+  std::vector<caf::actor> partitions;
+  for (std::size_t i = 0; i < bounds.size(); ++i) {
+    crowd_partition_setup ps;
+    ps.index = i;
+    ps.station = settings.station;
+    ps.bounds = bounds[i];
+    ps.behaviour = cs.behaviour;
+    ps.initial = snapshot0;
+    ps.pedestrians = std::move(owned[i]);
+    partitions.push_back(spawn_crowd_partition(system, std::move(ps)));
+  }
+  auto coordinator = system.spawn(
+      world_coordinator,
+      coordinator_setup{settings.station, bounds, std::move(spawner), cs.behaviour.tick_s,
+                        snapshot0, settings.end_tick, std::move(trajectories), partitions});
+  for (std::size_t i = 0; i < partitions.size(); ++i) {
+    caf::anon_send(partitions[i], world_attach_atom_v, coordinator);
+    out.participants.emplace_back(partitions[i], crowd_partition_participant(i));
+  }
+  out.participants.emplace_back(coordinator, world_coordinator_participant());
+  return out;
+}
+
+}  // namespace argus::actors

@@ -1,0 +1,55 @@
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <utility>
+#include <vector>
+
+#include "actors/participant_info.hpp"
+#include "caf/actor.hpp"
+#include "caf/fwd.hpp"
+#include "world/crowd.hpp"
+#include "world/station.hpp"
+
+namespace argus::actors {
+
+/// How the world coordinator takes part in the clock: phase network, on demand (woken by the
+/// partitions' reports, so it runs in the same tick, right after them).
+participant_info world_coordinator_participant();
+
+/// What the world of a run needs.
+struct world_run_settings {
+  std::shared_ptr<const world::station> station;
+  world::crowd_settings crowd;
+  /// The clock's last tick + 1: the snapshot of this world tick ends the run.
+  std::int64_t end_tick = 0;
+  /// Where to write the ground-truth trajectories (CSV, world::trajectory_writer); empty for
+  /// none. Written as `<file>.partial` and renamed once the last tick is written.
+  std::filesystem::path trajectories;
+};
+
+/// The actors of a run's crowd, to join to the clock.
+struct world_actors {
+  std::vector<std::pair<caf::actor, participant_info>> participants;
+};
+
+/// Spawns the crowd of a run: one crowd-partition actor per vertical strip
+/// (`world::vertical_strips`) and the world coordinator, starting from the same initial crowd
+/// as `world::crowd` (same spawner, same prefill), so that the run reproduces
+/// `world::crowd::step` tick for tick, bit for bit, for any partition and thread count.
+///
+/// Clock tick t runs world tick t + 1: in phase world every partition steps its pedestrians
+/// from the snapshot of world tick t and reports `(world_report_atom, mail_stamp,
+/// partition_report)` to the coordinator. In phase network the coordinator takes the reports
+/// in partition order, runs the spawner on the gathered states, merges the immutable snapshot
+/// of world tick t + 1, appends it to the trajectories, emits `pedestrian_entered`,
+/// `pedestrian_left` and `goal_completed` events, and sends every partition
+/// `(world_update_atom, mail_stamp, world_update)`: the shared snapshot and the pedestrians it
+/// owns now (hand-overs and newcomers go to `world::owner_of` their position).
+///
+/// The attachments (`(world_attach_atom, actor)` to each partition) are sent from the calling
+/// thread, so they precede any tick when the caller joins the actors before `start`.
+world_actors spawn_world(caf::actor_system& system, world_run_settings settings);
+
+}  // namespace argus::actors

@@ -1,0 +1,161 @@
+// Messages per second through the link layer (issue #6): N nodes in a random geometric graph
+// with mean degree about 8; every node sends K messages per tick on each of its links (K = 1:
+// the worst case for per-tick batching; K = 8: a burst such as a query to every neighbour
+// plus forwarding); links draw Table 2 delay and loss and deliver. 1 and 2 scheduler threads.
+//
+//   build/bench/link_bench --benchmark_counters_tabular=true
+
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <filesystem>
+#include <random>
+
+#include "actors/clock.hpp"
+#include "actors/link.hpp"
+#include "actors/link_command.hpp"
+#include "actors/participant_ids.hpp"
+#include "actors/recorder.hpp"
+#include "actors/system_config.hpp"
+#include "actors/tick_context.hpp"
+#include "actors/type_ids.hpp"
+#include "protocol/topology.hpp"
+
+namespace {
+
+using namespace argus;
+using namespace argus::actors;
+
+struct node_links {
+  std::vector<std::pair<caf::actor, std::uint64_t>> links;
+};
+
+// Sends `burst` messages per link per tick; counts nothing itself (the links account).
+caf::behavior blaster(caf::event_based_actor* self, int node, int burst,
+                      std::shared_ptr<node_links> mine) {
+  auto seq = std::make_shared<std::uint32_t>(0);
+  return {
+      [](net_deliver_atom, const mail_stamp&, int, const std::vector<protocol::net_message>&) {
+        // nop: arrivals are the links' business here
+      },
+      [=](tick_atom, std::int64_t tick, std::uint8_t) {
+        tick_context ctx(participant_ids::camera(node), "n", tick, phase::cameras);
+        for (const auto& [link, id] : mine->links) {
+          std::vector<protocol::net_message> batch(static_cast<std::size_t>(burst));
+          for (auto& m : batch) {
+            m.id = protocol::make_message_id(node, (*seq)++);
+            m.origin = node;
+            m.kind = "bench";
+          }
+          auto first = batch.front().id;
+          self->send(link, net_send_atom_v,
+                     mail_stamp{tick, 3, participant_ids::camera(node), first}, node,
+                     std::move(batch));
+          ctx.sent_mail_to(id);
+        }
+        self->send(caf::actor_cast<caf::actor>(self->current_sender()), std::move(ctx).finish());
+      },
+  };
+}
+
+// A random geometric graph: N nodes uniform in a square sized so the mean degree is ~8.
+config::scenario graph(int nodes) {
+  config::scenario s;
+  s.run.seed = 1;
+  double side = 100.0 * std::sqrt(static_cast<double>(nodes));
+  // Mean degree = N * pi r^2 / side^2 = 8.
+  s.network.communication_range_m = side * std::sqrt(8.0 / (M_PI * nodes));
+  std::mt19937_64 rng(42);
+  std::uniform_real_distribution<double> u(0.0, side);
+  for (int i = 1; i <= nodes; ++i) {
+    config::camera_settings c;
+    c.id = i;
+    c.position = {u(rng), u(rng)};
+    s.cameras.push_back(c);
+  }
+  return s;
+}
+
+struct outcome {
+  double wall = 0;
+  std::uint64_t messages = 0;
+  std::size_t links = 0;
+};
+
+outcome run_links(const config::scenario& s, const protocol::topology& topo, unsigned threads,
+                  int burst, std::int64_t ticks) {
+  system_config cfg(threads);
+  caf::actor_system sys{cfg};
+  recorder_settings rs;
+  rs.output_dir = std::filesystem::temp_directory_path() / "argus-link-bench";
+  auto recorder = spawn_recorder(sys, rs);
+  clock_settings cs;
+  cs.end_tick = ticks;
+  auto clock = spawn_clock(sys, cs, recorder, caf::actor{});
+  std::map<int, std::shared_ptr<node_links>> per_node;
+  std::map<int, caf::actor> nodes;
+  for (int n : topo.nodes()) per_node[n] = std::make_shared<node_links>();
+  for (int n : topo.nodes()) {
+    nodes[n] = sys.spawn(blaster, n, burst, per_node[n]);
+    caf::anon_send(
+        clock, join_atom_v, nodes[n],
+        participant_info{participant_ids::camera(n), "n", phase::cameras, wake_mode::every_tick});
+  }
+  for (std::size_t i = 0; i < topo.links().size(); ++i) {
+    auto [a, b] = topo.links()[i];
+    auto info = link_participant(i, a, b);
+    auto link = spawn_link(sys, s, i, a, b);
+    per_node[a]->links.emplace_back(link, info.id);
+    per_node[b]->links.emplace_back(link, info.id);
+    for (int end : {a, b}) {
+      link_command attach;
+      attach.node = end;
+      attach.handle = nodes[end];
+      caf::anon_send(link, link_cmd_atom_v, mail_stamp{-1, 0, 0, 0}, attach);
+    }
+    caf::anon_send(clock, join_atom_v, link, info);
+  }
+  outcome out;
+  out.links = topo.links().size();
+  caf::scoped_actor self{sys};
+  self->request(clock, caf::infinite, start_atom_v)
+      .receive(
+          [&](run_result& r) {
+            out.wall = r.wall_seconds;
+            for (const auto& [name, kinds] : r.links)
+              for (const auto& [kind, c] : kinds) out.messages += c.sent;
+          },
+          [](caf::error&) {});
+  return out;
+}
+
+void bm_links(benchmark::State& state) {
+  auto nodes = static_cast<int>(state.range(0));
+  auto threads = static_cast<unsigned>(state.range(1));
+  auto burst = static_cast<int>(state.range(2));
+  auto s = graph(nodes);
+  protocol::topology topo(s);
+  std::int64_t ticks = std::clamp<std::int64_t>(400'000 / (8 * nodes), 5, 200);
+  double wall = 0;
+  std::uint64_t messages = 0;
+  for (auto _ : state) {
+    auto o = run_links(s, topo, threads, burst, ticks);
+    state.SetIterationTime(o.wall);
+    wall += o.wall;
+    messages += o.messages;
+    state.counters["links"] = static_cast<double>(o.links);
+  }
+  state.counters["messages_per_s"] = wall > 0 ? static_cast<double>(messages) / wall : 0;
+  state.counters["mean_degree"] = 2.0 * static_cast<double>(topo.links().size()) / nodes;
+}
+
+BENCHMARK(bm_links)
+    ->ArgsProduct({{100, 1000, 10000}, {1, 2}, {1, 8}})
+    ->ArgNames({"nodes", "threads", "burst"})
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(2);
+
+}  // namespace
+
+BENCHMARK_MAIN();

@@ -1,0 +1,245 @@
+#define CAF_SUITE actors.link
+
+#include "actors/link.hpp"
+
+#include <map>
+
+#include "actors/clock.hpp"
+#include "actors/link_command.hpp"
+#include "actors/participant_ids.hpp"
+#include "actors/system_config.hpp"
+#include "caf/test/dsl.hpp"
+#include "caf/test/unit_test_impl.hpp"
+#include "tests/actors/test_participants.hpp"
+
+using namespace argus;
+using namespace argus::actors;
+using namespace argus::actors::testing;
+
+namespace {
+
+struct delivery {
+  std::int64_t tick;       // when the link handed it over
+  std::int64_t sent_tick;  // from the body
+  std::uint64_t id;
+};
+
+struct endpoint_log {
+  std::vector<delivery> got;
+};
+
+// A camera stand-in: sends `per_tick` messages to `peer` over the link on ticks in
+// [from_tick, to_tick), and records what the link delivers to it.
+struct endpoint_plan {
+  int node = 0;
+  int peer = 0;
+  int per_tick = 0;
+  std::int64_t from_tick = 0;
+  std::int64_t to_tick = 0;
+};
+
+caf::behavior endpoint(caf::event_based_actor* self, endpoint_plan plan, caf::actor link,
+                       std::uint64_t link_id, std::shared_ptr<endpoint_log> log) {
+  auto seq = std::make_shared<std::uint32_t>(0);
+  return {
+      [=](net_deliver_atom, const mail_stamp& stamp, int,
+          const std::vector<protocol::net_message>& batch) {
+        for (const auto& m : batch) log->got.push_back({stamp.tick, std::stoll(m.body), m.id});
+      },
+      [=](tick_atom, std::int64_t tick, std::uint8_t) {
+        tick_context ctx(participant_ids::camera(plan.node), "endpoint", tick, phase::cameras);
+        if (tick >= plan.from_tick && tick < plan.to_tick) {
+          std::vector<protocol::net_message> batch;
+          for (int i = 0; i < plan.per_tick; ++i) {
+            protocol::net_message m;
+            m.id = protocol::make_message_id(plan.node, (*seq)++);
+            m.origin = plan.node;
+            m.destination = plan.peer;
+            m.kind = "test";
+            m.body = std::to_string(tick);
+            batch.push_back(std::move(m));
+          }
+          self->send(link, net_send_atom_v,
+                     mail_stamp{tick, 3, participant_ids::camera(plan.node),
+                                static_cast<std::uint64_t>(tick)},
+                     plan.node, std::move(batch));
+          ctx.sent_mail_to(link_id);
+        }
+        self->send(caf::actor_cast<caf::actor>(self->current_sender()), std::move(ctx).finish());
+      },
+  };
+}
+
+// Sends scheduled commands to the link in the faults phase, as the fault injector does.
+caf::behavior commander(caf::event_based_actor* self, caf::actor link, std::uint64_t link_id,
+                        std::map<std::int64_t, link_command> schedule) {
+  return {
+      [=](tick_atom, std::int64_t tick, std::uint8_t) {
+        tick_context ctx(participant_ids::fault_injector, "commander", tick, phase::faults);
+        auto it = schedule.find(tick);
+        if (it != schedule.end()) {
+          self->send(link, link_cmd_atom_v, mail_stamp{tick, 0, participant_ids::fault_injector, 0},
+                     it->second);
+          ctx.sent_mail_to(link_id);
+        }
+        self->send(caf::actor_cast<caf::actor>(self->current_sender()), std::move(ctx).finish());
+      },
+  };
+}
+
+struct test_config : system_config {
+  test_config() : system_config(1) {}
+};
+
+struct fixture : test_coordinator_fixture<test_config> {
+  std::shared_ptr<recorded> rec = std::make_shared<recorded>();
+  caf::actor recorder = sys.spawn(fake_recorder, rec);
+  std::shared_ptr<endpoint_log> at1 = std::make_shared<endpoint_log>();
+  std::shared_ptr<endpoint_log> at2 = std::make_shared<endpoint_log>();
+  caf::actor clock;
+  caf::actor link;
+  std::uint64_t link_id = participant_ids::link(0);
+
+  void build(config::network_settings net, std::int64_t ticks, endpoint_plan plan1,
+             std::map<std::int64_t, link_command> schedule = {}) {
+    clock_settings cs;
+    cs.end_tick = ticks;
+    clock = spawn_clock(sys, cs, recorder, caf::actor{});
+    config::scenario s;
+    s.run.seed = 5;
+    s.network = net;
+    link = spawn_link(sys, s, 0, 1, 2);
+    auto e1 = sys.spawn(endpoint, plan1, link, link_id, at1);
+    auto e2 = sys.spawn(endpoint, endpoint_plan{2, 1, 0, 0, 0}, link, link_id, at2);
+    attach(1, e1);
+    attach(2, e2);
+    self->send(clock, join_atom_v, link, link_participant(0, 1, 2));
+    self->send(
+        clock, join_atom_v, e1,
+        participant_info{participant_ids::camera(1), "e1", phase::cameras, wake_mode::every_tick});
+    self->send(
+        clock, join_atom_v, e2,
+        participant_info{participant_ids::camera(2), "e2", phase::cameras, wake_mode::every_tick});
+    auto cmd = sys.spawn(commander, link, link_id, std::move(schedule));
+    self->send(clock, join_atom_v, cmd,
+               participant_info{participant_ids::fault_injector, "commander", phase::faults,
+                                wake_mode::every_tick});
+  }
+
+  void attach(int node, caf::actor handle) {
+    link_command c;
+    c.op = link_op::attach;
+    c.node = node;
+    c.handle = std::move(handle);
+    self->send(link, link_cmd_atom_v, mail_stamp{-1, 0, 0, static_cast<std::uint64_t>(node)}, c);
+  }
+
+  protocol::message_counts run_and_count() {
+    self->send(clock, start_atom_v);
+    run();
+    run_result result;
+    self->receive([&](run_result& r) { result = std::move(r); },
+                  caf::after(std::chrono::seconds(0)) >> [] { CAF_FAIL("the run stalled"); });
+    CAF_REQUIRE_EQUAL(result.links.count("link/1-2"), 1u);
+    return result.links["link/1-2"]["test"];
+  }
+};
+
+config::network_settings lossless() {
+  config::network_settings n;
+  n.loss_probability = 0.0;
+  return n;
+}
+
+}  // namespace
+
+CAF_TEST_FIXTURE_SCOPE(link_tests, fixture)
+
+CAF_TEST(delays cover exactly the table 2 bounds when reordering is allowed) {
+  auto net = lossless();
+  net.reorder = true;
+  build(net, 120, {1, 2, 20, 0, 100});
+  auto c = run_and_count();
+  CAF_CHECK_EQUAL(c.sent, 2000u);
+  CAF_CHECK_EQUAL(c.delivered, 2000u);
+  CAF_CHECK(c.balanced());
+  CAF_REQUIRE_EQUAL(at2->got.size(), 2000u);
+  std::int64_t lo = 100, hi = 0;
+  bool reordered = false;
+  for (std::size_t i = 0; i < at2->got.size(); ++i) {
+    auto delay = at2->got[i].tick - at2->got[i].sent_tick;
+    lo = std::min(lo, delay);
+    hi = std::max(hi, delay);
+    if (i > 0 && at2->got[i - 1].id > at2->got[i].id) reordered = true;
+  }
+  // 200-500 ms at 15 Hz: 3 to 7 ticks.
+  CAF_CHECK_EQUAL(lo, 3);
+  CAF_CHECK_EQUAL(hi, 7);
+  CAF_CHECK(reordered);
+}
+
+CAF_TEST(by default each direction delivers in order within the bounds) {
+  build(lossless(), 120, {1, 2, 20, 0, 100});
+  auto c = run_and_count();
+  CAF_CHECK_EQUAL(c.delivered, 2000u);
+  CAF_REQUIRE_EQUAL(at2->got.size(), 2000u);
+  for (std::size_t i = 0; i < at2->got.size(); ++i) {
+    auto delay = at2->got[i].tick - at2->got[i].sent_tick;
+    CAF_CHECK(delay >= 3 && delay <= 7);
+    if (i > 0) CAF_CHECK_LESS(at2->got[i - 1].id, at2->got[i].id);
+  }
+}
+
+CAF_TEST(loss rate within statistical tolerance and accounting balanced) {
+  config::network_settings net;  // Table 2: loss 0.1
+  build(net, 110, {1, 2, 40, 0, 100});
+  auto c = run_and_count();
+  CAF_CHECK_EQUAL(c.sent, 4000u);
+  auto rate = static_cast<double>(c.lost) / static_cast<double>(c.sent);
+  // 5 standard deviations of binomial(4000, 0.1): 0.024.
+  CAF_CHECK_LESS(std::abs(rate - 0.1), 0.024);
+  CAF_CHECK_EQUAL(c.delivered, at2->got.size());
+  CAF_CHECK(c.balanced());
+}
+
+CAF_TEST(a cut loses everything until the link is healed) {
+  link_command cut;
+  cut.op = link_op::cut;
+  link_command heal;
+  heal.op = link_op::heal;
+  build(lossless(), 80, {1, 2, 1, 0, 60}, {{20, cut}, {40, heal}});
+  auto c = run_and_count();
+  // Sent before 13 arrive before the cut at 20 (at most 7 ticks late); sent 13..19 may be
+  // caught on the wire; sent 20..39 are lost; sent from 40 on arrive.
+  for (const auto& d : at2->got) CAF_CHECK(d.sent_tick < 20 || d.sent_tick >= 40);
+  std::size_t after_heal = 0;
+  for (const auto& d : at2->got) after_heal += d.sent_tick >= 40 ? 1 : 0;
+  CAF_CHECK_EQUAL(after_heal, 20u);
+  CAF_CHECK_GREATER_OR_EQUAL(c.lost, 20u);
+  CAF_CHECK(c.balanced());
+}
+
+CAF_TEST(messages to a crashed node are dropped and counted and a recovered node is reachable) {
+  link_command down;
+  down.op = link_op::node_down;
+  down.node = 2;
+  build(lossless(), 80, {1, 2, 1, 0, 60}, {{20, down}});
+  // The node comes back at tick 40 as a fresh actor.
+  auto fresh_log = std::make_shared<endpoint_log>();
+  auto fresh = sys.spawn(endpoint, endpoint_plan{2, 1, 0, 0, 0}, link, link_id, fresh_log);
+  link_command back;
+  back.op = link_op::attach;
+  back.node = 2;
+  back.handle = fresh;
+  self->send(link, link_cmd_atom_v, mail_stamp{40, 0, participant_ids::fault_injector, 1}, back);
+  auto c = run_and_count();
+  for (const auto& d : at2->got) CAF_CHECK_LESS(d.tick, 20);
+  CAF_CHECK(!fresh_log->got.empty());
+  for (const auto& d : fresh_log->got) CAF_CHECK_GREATER_OR_EQUAL(d.tick, 40);
+  CAF_CHECK_GREATER(c.dropped, 10u);  // due at ticks 20..39, while the node was down
+  CAF_CHECK_EQUAL(c.delivered, at2->got.size() + fresh_log->got.size());
+  CAF_CHECK_EQUAL(c.delivered + c.dropped, 60u);  // everything sent arrived or was dropped
+  CAF_CHECK(c.balanced());
+}
+
+CAF_TEST_FIXTURE_SCOPE_END()

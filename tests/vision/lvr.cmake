@@ -1,0 +1,16 @@
+# Tests of the low-level visual routines: one executable and one ctest entry per test file,
+# each with a timeout and the label "vision".
+set(argus_vision_lvr_tests
+  color_histogram_test
+  backprojection_test
+  multiscale_localizer_test
+  tracker_test
+  fixate_zoom_test
+  relevance_test)
+
+foreach(test_name IN LISTS argus_vision_lvr_tests)
+  add_executable(vision_${test_name} ${CMAKE_CURRENT_LIST_DIR}/${test_name}.cpp)
+  target_link_libraries(vision_${test_name} PRIVATE argus_vision GTest::gtest_main)
+  add_test(NAME vision.${test_name} COMMAND vision_${test_name})
+  set_tests_properties(vision.${test_name} PROPERTIES TIMEOUT 120 LABELS "vision")
+endforeach()

@@ -1,0 +1,151 @@
+#include "vision/tracker.hpp"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "opencv2/imgproc.hpp"
+
+namespace argus::vision {
+namespace {
+
+double overlap(const cv::Rect& a, const cv::Rect& b) {
+  double shared = (a & b).area();
+  return shared / (a.area() + b.area() - shared);
+}
+
+cv::Mat background(unsigned seed) {
+  cv::Mat image(240, 320, CV_8UC3);
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<int> shade(60, 170);
+  for (int y = 0; y < 240; y += 8)
+    for (int x = 0; x < 320; x += 8) {
+      int g = shade(rng);
+      cv::rectangle(image, cv::Rect(x, y, 8, 8), cv::Scalar(g - 20, g, g + 10), cv::FILLED);
+    }
+  return image;
+}
+
+cv::Rect draw_pedestrian(cv::Mat& image, cv::Point corner, int h, cv::Scalar shirt,
+                         cv::Scalar trousers) {
+  const int w = h / 3;
+  cv::rectangle(image, cv::Rect(corner.x, corner.y, w, h / 2), shirt, cv::FILLED);
+  cv::rectangle(image, cv::Rect(corner.x, corner.y + h / 2, w, h - h / 2), trousers, cv::FILLED);
+  return {corner.x, corner.y, w, h};
+}
+
+// A synthetic sequence: the target walks right at 2 px per frame; a green pedestrian walks
+// left past it in front (covering part of it), then a wide grey pillar hides it entirely.
+//
+//   frames 0-29    clear
+//   frames 30-49   partial: the green pedestrian covers about half the target's width
+//   frames 60-69   full: behind the pillar
+//   frames 70-99   clear again
+TEST(tracker, holds_through_partial_occlusion_and_regains_after_full) {
+  const cv::Scalar red(30, 30, 200), blue(140, 60, 20), green(40, 170, 40), pink(180, 80, 230);
+  const cv::Mat floor = background(3);
+  auto frame_at = [&](int k, cv::Rect& truth, bool& hidden) {
+    cv::Mat frame = floor.clone();
+    truth = draw_pedestrian(frame, {20 + 2 * k, 60}, 90, red, blue);
+    hidden = false;
+    if (k >= 30 && k < 50) {
+      draw_pedestrian(frame, {truth.x + truth.width / 2, 70}, 90, green, pink);
+    }
+    if (k >= 60 && k < 70) {
+      cv::rectangle(frame, cv::Rect(truth.x - 15, 0, truth.width + 30, 240),
+                    cv::Scalar(128, 128, 128), cv::FILLED);
+      hidden = true;
+    }
+    return frame;
+  };
+  cv::Rect truth;
+  bool hidden = false;
+  auto first = frame_at(0, truth, hidden);
+  tracker t(color_histogram::of_region(first, truth));
+  t.start(truth);
+  int held = 0, lost_while_hidden = 0, regained = 0;
+  for (int k = 1; k < 100; ++k) {
+    auto frame = frame_at(k, truth, hidden);
+    auto seen = t.update(frame);
+    if (k >= 30 && k < 50) held += seen.found && overlap(seen.box, truth) > 0.3 ? 1 : 0;
+    if (hidden) lost_while_hidden += seen.found ? 0 : 1;
+    if (k >= 75) regained += seen.found && overlap(seen.box, truth) > 0.5 ? 1 : 0;
+    if (k < 30) {
+      EXPECT_TRUE(seen.found && overlap(seen.box, truth) > 0.5) << "frame " << k;
+    }
+  }
+  EXPECT_EQ(held, 20);               // every partially occluded frame
+  EXPECT_EQ(lost_while_hidden, 10);  // lost track reported behind the pillar
+  EXPECT_EQ(regained, 25);           // and regained after it
+}
+
+config::camera_settings ptz_camera() {
+  config::camera_settings camera;
+  camera.pan_limits = {-90.0, 90.0};
+  camera.tilt_limits = {-60.0, 0.0};
+  camera.field_of_view_limits = {10.0, 60.0};
+  return camera;
+}
+
+TEST(tracking_fsm, wait_widens_the_zoom_then_search_sweeps_then_fails) {
+  config::controller_settings controller;  // Table 2: wait 2 min, search 5 min
+  tracking_fsm fsm(ptz_camera(), controller);
+  const frame_size frame{320, 240};
+  const config::seconds dt{1.0 / 15.0};
+  ptz_pose pose{0.0, -20.0, 20.0};
+  track_observation seen{true, cv::Rect(150, 80, 20, 60), 0.9};
+  auto command = fsm.step(seen, pose, frame, dt);
+  EXPECT_EQ(command.state, tracking_state::track);
+  pose = command.pose;
+
+  track_observation lost{false, seen.box, 0.0};
+  command = fsm.step(lost, pose, frame, dt);
+  EXPECT_EQ(command.state, tracking_state::wait);
+  double fov = pose.field_of_view_deg;
+  for (int k = 0; k < 15 * 10; ++k) {  // 10 s of Wait: the zoom widens, pan and tilt hold
+    command = fsm.step(lost, pose, frame, dt);
+    EXPECT_EQ(command.state, tracking_state::wait);
+    EXPECT_GE(command.pose.field_of_view_deg, pose.field_of_view_deg);
+    EXPECT_EQ(command.pose.pan_deg, pose.pan_deg);
+    pose = command.pose;
+  }
+  EXPECT_NEAR(pose.field_of_view_deg - fov, 2.0 * 10.0, 0.5);  // 2 deg/s, gradually
+
+  // Reacquired in Wait: back to Track.
+  EXPECT_EQ(fsm.step(seen, pose, frame, dt).state, tracking_state::track);
+  fsm.step(lost, pose, frame, dt);
+  // Wait times out after 2 min into Search, which sweeps pan at the widest FOV.
+  int frames = 0;
+  while (fsm.step(lost, pose, frame, dt).state == tracking_state::wait) ++frames;
+  EXPECT_NEAR(frames * dt.count(), 120.0, 0.2);
+  EXPECT_EQ(fsm.state(), tracking_state::search);
+  double min_pan = 0.0, max_pan = 0.0;
+  for (int k = 0; k < 15 * 30; ++k) {
+    command = fsm.step(lost, pose, frame, dt);
+    pose = command.pose;
+    min_pan = std::min(min_pan, pose.pan_deg);
+    max_pan = std::max(max_pan, pose.pan_deg);
+  }
+  EXPECT_EQ(pose.field_of_view_deg, 60.0);
+  EXPECT_EQ(max_pan, 90.0);  // swept to both limits
+  EXPECT_EQ(min_pan, -90.0);
+  // Search times out after 5 min: the task failed.
+  for (int k = 0; k < 15 * 300 && fsm.state() == tracking_state::search; ++k)
+    pose = fsm.step(lost, pose, frame, dt).pose;
+  EXPECT_EQ(fsm.state(), tracking_state::failed);
+  fsm.reset();
+  EXPECT_EQ(fsm.state(), tracking_state::track);
+}
+
+TEST(tracking_fsm, track_fixates_on_the_box) {
+  tracking_fsm fsm(ptz_camera(), config::controller_settings{});
+  ptz_pose pose{0.0, -20.0, 30.0};
+  // Target right of and above the centre: pan right (negative), tilt up.
+  auto command = fsm.step({true, cv::Rect(250, 20, 20, 60), 0.9}, pose, {320, 240},
+                          config::seconds{1.0 / 15.0});
+  EXPECT_LT(command.pose.pan_deg, 0.0);
+  EXPECT_GT(command.pose.tilt_deg, -20.0);
+}
+
+}  // namespace
+}  // namespace argus::vision

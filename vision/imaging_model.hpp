@@ -1,0 +1,76 @@
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <opencv2/core.hpp>
+
+#include "config/scenario.hpp"
+
+namespace argus::vision {
+
+/// The imaging model of Section III-A: turns a clean rendered frame into what a cheap
+/// surveillance camera delivers. Effects, each off or on per `config::imaging_model`, applied
+/// in the order a real camera would:
+///
+///   fields --weave--> colour response --> detector noise --> data dropout --> JPEG round trip
+///   (sensor)          (HSV, tint/tone/shade) (Gaussian)       (transmission)   (bandwidth)
+///
+/// One instance per camera, with its own RNG (cv::RNG, seeded from the run seed and the
+/// camera id through config::derive_seed), so that a camera's noise is the same in every run
+/// with the same seed, whichever thread applies it. Not thread-safe: one thread at a time.
+class imaging_model {
+ public:
+  /// The model of `settings`, its noise drawn from `seed`.
+  imaging_model(const config::imaging_model& settings, std::uint64_t seed);
+
+  /// The model of camera `camera_id` in a run seeded with `run_seed`.
+  static imaging_model for_camera(const config::imaging_model& settings, std::uint64_t run_seed,
+                                  int camera_id);
+
+  /// Degrades a progressive frame (CV_8UC3, BGR); with interlacing on, the same frame stands
+  /// in for both fields.
+  cv::Mat apply(const cv::Mat& frame);
+
+  /// Degrades an interlaced frame: even rows from `first_field` (rendered at t), odd rows
+  /// from `second_field` (rendered half a frame later, t + tick / 2). With interlacing off,
+  /// only `first_field` is used.
+  cv::Mat apply(const cv::Mat& first_field, const cv::Mat& second_field);
+
+  /// Whether the renderer should provide two fields per frame.
+  bool interlaced() const noexcept { return settings_.interlace; }
+
+  /// The settings.
+  const config::imaging_model& settings() const noexcept { return settings_; }
+
+  /// Size of the last JPEG encoding in bytes (0 when JPEG is off): the bandwidth a frame
+  /// would cost on the network.
+  std::size_t last_jpeg_bytes() const noexcept { return last_jpeg_bytes_; }
+
+ private:
+  config::imaging_model settings_;
+  cv::RNG rng_;
+  std::size_t last_jpeg_bytes_ = 0;
+};
+
+/// Even rows of `first_field`, odd rows of `second_field` (same size and type).
+cv::Mat weave_fields(const cv::Mat& first_field, const cv::Mat& second_field);
+
+/// Colour response in 8-bit HSV (hue in steps of 360/256 degrees): hue + hue_offset_deg
+/// (wrapping), saturation * saturation_gain,
+/// value * value_gain + value_offset (value and value_offset as fractions of full scale,
+/// 1 = 255), clipped to range; then c = (1 - tint) c + tint white, c = (1 - tone) c + tone
+/// grey (50 %), c = (1 - shade) c (mixing with black), in that order.
+void apply_color_response(cv::Mat& frame, const config::color_response& response);
+
+/// Adds zero-mean Gaussian noise of `sigma` (8-bit units) to every channel, saturating.
+void add_detector_noise(cv::Mat& frame, double sigma, cv::RNG& rng);
+
+/// Corrupts each pixel independently with probability `fraction`: snow sets it to 255, a bit
+/// flip inverts every bit, salt and pepper alternates 255 and 0. Returns the count corrupted.
+std::size_t add_dropout(cv::Mat& frame, double fraction, config::dropout_kind kind, cv::RNG& rng);
+
+/// JPEG encode at `quality` (1-100) and decode; `encoded_bytes`, if given, receives the size
+/// of the encoding.
+cv::Mat jpeg_round_trip(const cv::Mat& frame, int quality, std::size_t* encoded_bytes = nullptr);
+
+}  // namespace argus::vision

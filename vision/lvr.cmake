@@ -1,0 +1,9 @@
+# Low-level visual routines (Section III-B, III-D): colour indexing, multiscale
+# localisation, tracking, fixate/zoom control and relevance. Included by CMakeLists.txt.
+list(APPEND argus_vision_sources
+  ${CMAKE_CURRENT_LIST_DIR}/color_histogram.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/backprojection.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/multiscale_localizer.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/tracker.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/fixate_zoom.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/relevance.cpp)

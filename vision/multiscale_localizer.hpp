@@ -1,0 +1,112 @@
+#pragma once
+
+// Target localisation in backprojected images: the paper's multiscale algorithm (Fig. 9)
+// and Swain and Ballard's single-scale baseline [45].
+//
+// Kernel shape. The paper uses "(6l + 1) x (2l + 1) rectangular summing kernels"; we read
+// the first factor as the height and the second as the width (rows x columns, the usual
+// image convention), so that a kernel is tall and thin like a standing pedestrian
+// (Fig. 9(a) shows upright targets). The kernel of size l covers the rows y - 3l .. y + 3l
+// and the columns x - l .. x + l around its centre (x, y). The image is extended with zero
+// borders, as in Fig. 8.
+
+#include <functional>
+#include <vector>
+
+#include "opencv2/core.hpp"
+#include "vision/color_histogram.hpp"
+
+namespace argus::vision {
+
+/// A localised target: its box in pixels (x, y the top-left corner, clipped to the image),
+/// its acceptance score (Fig. 9, step 5) and the kernel size l that produced it.
+struct localized_region {
+  int x = 0;
+  int y = 0;
+  int width = 0;
+  int height = 0;
+  double score = 0.0;
+  int scale = 0;
+  /// The box as a cv::Rect.
+  cv::Rect box() const { return {x, y, width, height}; }
+};
+
+/// Scores a candidate box for acceptance (Fig. 9, step 5); accepted if the score > rho.
+using region_scorer = std::function<double(const cv::Rect&)>;
+
+/// The paper's acceptance test: the intersection of the target histogram with the histogram
+/// of the box in the original image, sum_i min(T(i), H(i)) / sum_i T(i) (Fig. 9, step 5),
+/// both normalised to sum 1 so that boxes of any size compare with the same T. `bin_indices`
+/// is bin_index_image() of the original image; both must outlive the scorer.
+region_scorer histogram_scorer(const cv::Mat& bin_indices, const color_histogram& target);
+
+/// The kernel sizes l = (0.1, 0.2, ..., 1) x h / 7 for a frame h pixels high, each rounded
+/// to the nearest integer and at least 1, duplicates removed (Section III-B).
+std::vector<int> paper_scales(int frame_height_px);
+
+/// The domain of the (6l + 1) x (2l + 1) kernel of size l centred at `centre` (not clipped).
+cv::Rect kernel_domain(cv::Point centre, int l);
+
+/// B_l = B * K_l (Fig. 9, step 1) with zero borders, by a direct double loop. Slow; a
+/// reference for tests. l = 0 is the 1 x 1 kernel.
+cv::Mat box_response_reference(const cv::Mat& backprojection, int l);
+
+/// Settings of the localiser.
+struct localizer_settings {
+  /// Kernel sizes l (each >= 0); empty = paper_scales(frame height).
+  std::vector<int> scales;
+  /// Acceptance threshold rho on the score (Fig. 9, step 5).
+  double rho = 0.5;
+  /// At most this many regions per call (the paper repeats until the first rejection).
+  int max_regions = 16;
+};
+
+/// The multiscale localiser of Fig. 9. Keeps its buffers between calls; not thread-safe, one
+/// per camera. With a single scale it is Swain and Ballard's localisation [45].
+class multiscale_localizer {
+ public:
+  /// A localiser with `settings`.
+  explicit multiscale_localizer(localizer_settings settings = {});
+
+  /// Every target in the CV_32F backprojection B, in the order found: Fig. 9, steps 1-6,
+  /// repeated until the first rejection (score <= rho), an empty B, or max_regions.
+  ///
+  /// Step 1: B_l = B * K_l for every l, by box sums over one integral image of B.
+  /// Step 2: (x*, y*) = argmax sum_l B_l.
+  /// Step 3: per l, the peak (x_l*, y_l*) of B_l inside K_l centred at (x*, y*).
+  /// Step 4: l* = argmax_l sum_{K}(B_l(x_l*, y_l*) - B_l(x, y))^2 / |K|, over K clipped to
+  ///         the image.
+  /// Step 5: the box of size l* centred at (x*, y*) is accepted if score(box) > rho.
+  /// Step 6: the box is set to 0 and steps 1-5 are repeated. We zero it in B and recompute
+  ///         the B_l around it (only where a kernel reaches it): "remove from B_l ... repeat
+  ///         steps 1 through 6" re-runs step 1, which only a change to B survives, and it
+  ///         also removes the tails a large kernel would keep of the found target. Points
+  ///         inside a box already accepted are not chosen again.
+  std::vector<localized_region> localize(const cv::Mat& backprojection, const region_scorer& score);
+
+  /// The settings in use.
+  const localizer_settings& settings() const noexcept { return settings_; }
+
+  /// The B_l of the last localize() call after all removals, one per scale (for tests).
+  const std::vector<cv::Mat>& responses() const noexcept { return responses_; }
+
+ private:
+  void compute_responses(const cv::Rect& area);
+
+  localizer_settings settings_;
+  std::vector<int> scales_;
+  int pad_x_ = 0;
+  int pad_y_ = 0;
+  cv::Mat padded_;
+  cv::Mat integral_;
+  std::vector<cv::Mat> responses_;
+  cv::Mat sum_;
+};
+
+/// Swain and Ballard's single-scale localisation [45] with the (6l + 1) x (2l + 1) kernel of
+/// size l: peaks of B_l, each accepted by `score` > rho and removed, as above.
+std::vector<localized_region> localize_single_scale(const cv::Mat& backprojection, int l,
+                                                    const region_scorer& score, double rho = 0.5,
+                                                    int max_regions = 16);
+
+}  // namespace argus::vision

@@ -1,0 +1,127 @@
+#include "vision/tracker.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "vision/backprojection.hpp"
+
+namespace argus::vision {
+
+tracker::tracker(color_histogram target, tracker_settings settings)
+    : target_(std::move(target)), settings_(settings) {
+  // nop
+}
+
+void tracker::start(const cv::Rect& box) {
+  box_ = box;
+  lost_ = false;
+}
+
+std::optional<track_observation> tracker::find_in(const cv::Mat& bin_indices,
+                                                  const cv::Rect& window, int frame_height) {
+  if (window.empty()) return std::nullopt;
+  const cv::Mat indices = bin_indices(window);
+  auto image =
+      color_histogram::of_bin_indices(indices, {0, 0, window.width, window.height}, target_.bins());
+  std::optional<double> area;
+  if (box_) area = static_cast<double>(box_->area());
+  auto b = backproject(indices, ratio_histogram(target_, image, area));
+  localizer_ = multiscale_localizer({paper_scales(frame_height), settings_.rho, 1});
+  auto found = localizer_.localize(b, histogram_scorer(indices, target_));
+  if (found.empty()) return std::nullopt;
+  return track_observation{true, found.front().box() + window.tl(), found.front().score};
+}
+
+track_observation tracker::update(const cv::Mat& bgr) {
+  const auto indices = bin_index_image(bgr, target_.bins());
+  const cv::Rect frame(0, 0, bgr.cols, bgr.rows);
+  std::optional<track_observation> seen;
+  if (box_ && !lost_) {
+    const int dx = static_cast<int>(std::lround(settings_.search_margin * box_->width));
+    const int dy = static_cast<int>(std::lround(settings_.search_margin * box_->height));
+    const cv::Rect window(box_->x - dx, box_->y - dy, box_->width + 2 * dx, box_->height + 2 * dy);
+    seen = find_in(indices, window & frame, bgr.rows);
+  }
+  if (!seen && (settings_.search_whole_frame || !box_)) seen = find_in(indices, frame, bgr.rows);
+  if (!seen) {
+    lost_ = true;
+    return {false, box_.value_or(cv::Rect{}), 0.0};
+  }
+  lost_ = false;
+  box_ = seen->box;
+  return *seen;
+}
+
+tracking_fsm::tracking_fsm(const config::camera_settings& camera,
+                           const config::controller_settings& controller,
+                           tracking_fsm_settings settings)
+    : camera_(camera), controller_(controller), settings_(settings) {
+  // nop
+}
+
+void tracking_fsm::reset() {
+  state_ = tracking_state::track;
+  in_state_ = config::seconds{0.0};
+}
+
+ptz_pose tracking_fsm::search_step(const ptz_pose& current, config::seconds dt) {
+  // Sweep pan to one limit, step tilt by a row, sweep back (Fig. 10 inset, Search).
+  ptz_pose goal = current;
+  goal.field_of_view_deg = camera_.field_of_view_limits.max_deg;
+  const auto& pan = camera_.pan_limits;
+  const double end = sweep_direction_ > 0 ? pan.max_deg : pan.min_deg;
+  if (std::abs(current.pan_deg - end) < 1e-6) {
+    sweep_direction_ = -sweep_direction_;
+    const double row = current.field_of_view_deg * (1.0 - settings_.search_row_overlap);
+    search_tilt_deg_ += row;
+    if (search_tilt_deg_ > camera_.tilt_limits.max_deg)
+      search_tilt_deg_ = camera_.tilt_limits.min_deg + current.field_of_view_deg / 2.0;
+  }
+  goal.pan_deg = sweep_direction_ > 0 ? pan.max_deg : pan.min_deg;
+  goal.tilt_deg =
+      std::clamp(search_tilt_deg_, camera_.tilt_limits.min_deg, camera_.tilt_limits.max_deg);
+  return slew_towards(current, goal, camera_, dt);
+}
+
+tracking_command tracking_fsm::step(const track_observation& observation, const ptz_pose& current,
+                                    const frame_size& frame, config::seconds dt) {
+  auto enter = [this](tracking_state next) {
+    state_ = next;
+    in_state_ = config::seconds{0.0};
+  };
+  if (state_ == tracking_state::failed) return {state_, current};
+  if (observation.found) {
+    if (state_ != tracking_state::track) enter(tracking_state::track);
+  } else if (state_ == tracking_state::track) {
+    enter(tracking_state::wait);
+  } else {
+    in_state_ += dt;
+    if (state_ == tracking_state::wait && in_state_ >= controller_.wait_timeout) {
+      enter(tracking_state::search);
+      sweep_direction_ = 1.0;
+      search_tilt_deg_ = current.tilt_deg;
+    } else if (state_ == tracking_state::search && in_state_ >= controller_.search_timeout) {
+      enter(tracking_state::failed);
+      return {state_, current};
+    }
+  }
+  switch (state_) {
+    case tracking_state::track:
+      if (!settings_.follow_in_track) return {state_, current};
+      return {state_,
+              fixate_zoom_step(current, observation.box, frame, camera_, dt, settings_.fixate)};
+    case tracking_state::wait: {
+      // Widen the zoom gradually to reacquire; pan and tilt hold.
+      ptz_pose goal = current;
+      goal.field_of_view_deg += settings_.wait_zoom_out_deg_per_s * dt.count();
+      return {state_, slew_towards(current, goal, camera_, dt)};
+    }
+    case tracking_state::search:
+      return {state_, search_step(current, dt)};
+    case tracking_state::failed:
+      break;
+  }
+  return {state_, current};
+}
+
+}  // namespace argus::vision

@@ -1,0 +1,131 @@
+#pragma once
+
+// Colour-indexing tracker (Section III-B) and the child FSM of the camera controller,
+// Track / Wait / Search (Fig. 10, inset).
+
+#include <optional>
+
+#include "config/scenario.hpp"
+#include "opencv2/core.hpp"
+#include "vision/color_histogram.hpp"
+#include "vision/fixate_zoom.hpp"
+#include "vision/multiscale_localizer.hpp"
+#include "vision/ptz_pose.hpp"
+
+namespace argus::vision {
+
+/// What the tracker saw in one frame.
+struct track_observation {
+  /// False when the track is lost in this frame.
+  bool found = false;
+  /// The target's box in pixels (the last known one when not found).
+  cv::Rect box;
+  /// Histogram intersection of the box with the target (Fig. 9, step 5).
+  double score = 0.0;
+};
+
+/// Settings of the tracker.
+struct tracker_settings {
+  /// Acceptance threshold on the normalised histogram intersection.
+  double rho = 0.4;
+  /// The search window is the last box grown by this many box sizes on every side.
+  double search_margin = 1.0;
+  /// Look in the whole frame when the target is not in the search window.
+  bool search_whole_frame = true;
+};
+
+/// Follows one target frame to frame: backprojects its histogram in a window around the last
+/// position (ratio histogram of that window, T scaled to the last box's area), re-localises
+/// it with the multiscale localiser (Fig. 9) and accepts it by histogram intersection; if it
+/// is not there, looks in the whole frame; otherwise reports the track lost.
+class tracker {
+ public:
+  /// A tracker for the target with signature `target`.
+  explicit tracker(color_histogram target, tracker_settings settings = {});
+
+  /// Starts (or restarts) the track at `box` in the current frame.
+  void start(const cv::Rect& box);
+
+  /// Processes one BGR frame.
+  track_observation update(const cv::Mat& bgr);
+
+  /// Whether the last update lost the target (or no track was started).
+  bool lost() const noexcept { return lost_; }
+
+  /// The last known box, if any.
+  const std::optional<cv::Rect>& box() const noexcept { return box_; }
+
+  /// The target's signature.
+  const color_histogram& target() const noexcept { return target_; }
+
+ private:
+  std::optional<track_observation> find_in(const cv::Mat& bin_indices, const cv::Rect& window,
+                                           int frame_height);
+
+  color_histogram target_;
+  tracker_settings settings_;
+  multiscale_localizer localizer_;
+  std::optional<cv::Rect> box_;
+  bool lost_ = true;
+};
+
+/// The child states of PerformingTask (Fig. 10, inset), plus `failed` once Search times out.
+enum class tracking_state { track, wait, search, failed };
+
+/// Settings of the child FSM beyond Table 2's timeouts.
+struct tracking_fsm_settings {
+  /// In Track, fixate and zoom on the target (Fig. 7(b), (c)); false holds the camera still.
+  bool follow_in_track = true;
+  /// Fixate and zoom gains and set point.
+  fixate_zoom_settings fixate;
+  /// In Wait, the field of view widens at this rate (degrees per second).
+  double wait_zoom_out_deg_per_s = 2.0;
+  /// In Search, successive tilt rows overlap by this fraction of the field of view.
+  double search_row_overlap = 0.2;
+};
+
+/// What the child FSM commands for the next frame.
+struct tracking_command {
+  tracking_state state = tracking_state::track;
+  ptz_pose pose;
+};
+
+/// The child FSM of Fig. 10 (inset):
+///
+///   track --lost--> wait --wait_timeout--> search --search_timeout--> failed
+///     ^              |                        |
+///     +----found-----+--------found-----------+
+///
+/// Track: fixate and zoom on the target. Wait: hold pan and tilt and widen the zoom gradually
+/// to reacquire. Search: sweep pan across its limits at the widest field of view, stepping
+/// tilt by rows. Timeouts are Table 2's (controller_settings). Time comes from `dt` only.
+class tracking_fsm {
+ public:
+  /// A child FSM for `camera` (limits, slew rates) with `controller`'s timeouts.
+  tracking_fsm(const config::camera_settings& camera, const config::controller_settings& controller,
+               tracking_fsm_settings settings = {});
+
+  /// One frame: the tracker's observation, the camera's pose, the frame size and the time
+  /// since the last step.
+  tracking_command step(const track_observation& observation, const ptz_pose& current,
+                        const frame_size& frame, config::seconds dt);
+
+  /// The current state.
+  tracking_state state() const noexcept { return state_; }
+
+  /// Back to Track (e.g. when a new task starts).
+  void reset();
+
+ private:
+  ptz_pose search_step(const ptz_pose& current, config::seconds dt);
+
+  config::camera_settings camera_;
+  config::controller_settings controller_;
+  tracking_fsm_settings settings_;
+  tracking_state state_ = tracking_state::track;
+  config::seconds in_state_{0.0};
+  double sweep_direction_ = 1.0;
+  double search_tilt_deg_ = 0.0;
+};
+
+}  // namespace argus::vision
