@@ -28,6 +28,9 @@ constexpr std::uint64_t link(std::size_t index) noexcept {
 /// The world coordinator: gathers the crowd partitions' results, spawns, publishes snapshots.
 inline constexpr std::uint64_t world_coordinator = 3;
 
+/// The video recorder of `argus run --video`: renders every camera each tick into a mosaic.
+inline constexpr std::uint64_t video_recorder = 4;
+
 /// Crowd partition number `index` (vertical strips, west to east).
 constexpr std::uint64_t crowd_partition(std::size_t index) noexcept {
   return 3'000'000'000ULL + static_cast<std::uint64_t>(index);

@@ -9,11 +9,14 @@
 #include "actors/clock.hpp"
 #include "actors/fault_injector.hpp"
 #include "actors/link.hpp"
+#include "actors/participant_ids.hpp"
 #include "actors/progress_printer.hpp"
 #include "actors/recorder.hpp"
+#include "actors/render_pool.hpp"
 #include "actors/scenario_script.hpp"
 #include "actors/system_config.hpp"
 #include "actors/type_ids.hpp"
+#include "actors/video_recorder.hpp"
 #include "actors/world_coordinator.hpp"
 #include "protocol/topology.hpp"
 #include "world/layout_loader.hpp"
@@ -26,6 +29,13 @@ std::filesystem::path output_dir_of(const config::scenario& scenario) {
 }
 
 run_outcome run_scenario(const config::scenario& scenario, bool show_progress) {
+  run_options options;
+  options.show_progress = show_progress;
+  return run_scenario(scenario, options);
+}
+
+run_outcome run_scenario(const config::scenario& scenario, const run_options& options) {
+  const bool show_progress = options.show_progress;
   auto threads = scenario.run.threads != 0 ? scenario.run.threads
                                            : std::max(1u, std::thread::hardware_concurrency());
   system_config cfg(threads);
@@ -34,6 +44,37 @@ run_outcome run_scenario(const config::scenario& scenario, bool show_progress) {
   run_outcome outcome;
   outcome.output_dir = output_dir_of(scenario);
   const double tick_seconds = scenario.run.tick.count();
+
+  // The station, the render pool and the video file first: when one of them fails, no other
+  // actor is running yet that the actor system would wait for.
+  const auto end_tick =
+      static_cast<std::int64_t>(std::llround(scenario.run.duration / scenario.run.tick));
+  caf::actor video_participant;
+  world_run_settings world_settings;
+  world_settings.station = world::station::load(world::layout_path(scenario));
+  render_pool pool;
+  if (options.video) {
+    pool = spawn_render_pool(system, world_settings.station,
+                             options.render_threads != 0 ? options.render_threads : threads);
+    video_settings vs;
+    vs.file = outcome.output_dir / "video" / "feeds.avi";
+    vs.cameras = scenario.cameras;
+    vs.run_seed = scenario.run.seed;
+    vs.tile_width_px = options.video_width_px;
+    vs.tile_height_px = options.video_height_px;
+    vs.tick_seconds = tick_seconds;
+    vs.end_tick = end_tick;
+    vs.render_pool = pool.front;
+    caf::actor video;
+    try {
+      video = spawn_video_recorder(system, std::move(vs));
+    } catch (...) {
+      caf::anon_send_exit(pool.front, caf::exit_reason::user_shutdown);
+      throw;
+    }
+    world_settings.snapshot_observers.emplace_back(video, participant_ids::video_recorder);
+    video_participant = video;
+  }
 
   recorder_settings rec;
   rec.output_dir = outcome.output_dir;
@@ -48,7 +89,7 @@ run_outcome run_scenario(const config::scenario& scenario, bool show_progress) {
   if (show_progress) progress = spawn_progress_printer(system, tick_seconds);
 
   clock_settings cs;
-  cs.end_tick = static_cast<std::int64_t>(std::llround(scenario.run.duration / scenario.run.tick));
+  cs.end_tick = end_tick;
   cs.tick_seconds = tick_seconds;
   cs.speed = scenario.run.speed;
   auto clock = spawn_clock(system, cs, recorder, progress);
@@ -86,9 +127,9 @@ run_outcome run_scenario(const config::scenario& scenario, bool show_progress) {
   caf::anon_send(clock, join_atom_v, script, script_participant());
   auto faults = spawn_fault_injector(system, scenario, clock, std::move(net));
   caf::anon_send(clock, join_atom_v, faults, fault_injector_participant(scenario));
-  world_run_settings world_settings;
-  world_settings.station = world::station::load(world::layout_path(scenario));
   world_settings.crowd = world::crowd_settings::from(scenario);
+  if (video_participant)
+    caf::anon_send(clock, join_atom_v, video_participant, video_recorder_participant());
   world_settings.end_tick = cs.end_tick;
   world_settings.trajectories = outcome.output_dir / "trajectories.csv";
   for (auto& [handle, info] : spawn_world(system, std::move(world_settings)).participants)
@@ -102,6 +143,8 @@ run_outcome run_scenario(const config::scenario& scenario, bool show_progress) {
                  [&](caf::error& err) { failure = system.render(err); });
   }
   if (progress) caf::anon_send_exit(progress, caf::exit_reason::user_shutdown);
+  // The render workers are detached threads linked to the front: end them with it.
+  if (pool.front) caf::anon_send_exit(pool.front, caf::exit_reason::user_shutdown);
   if (!failure.empty()) {
     caf::anon_send_exit(clock, caf::exit_reason::user_shutdown);
     caf::anon_send_exit(recorder, caf::exit_reason::user_shutdown);

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstddef>
 #include <filesystem>
 
 #include "actors/run_result.hpp"
@@ -13,11 +14,29 @@ struct run_outcome {
   std::filesystem::path output_dir;
 };
 
+/// How `argus run` runs a scenario, beyond the scenario itself.
+struct run_options {
+  /// Print a progress line (stderr) while running.
+  bool show_progress = false;
+  /// Write a mosaic video of every camera's degraded view, one frame per tick, to
+  /// `<output dir>/video/feeds.avi` (render pool + video recorder).
+  bool video = false;
+  /// Size of one camera's tile in the video, pixels.
+  int video_width_px = 320;
+  int video_height_px = 240;
+  /// Render workers (EGL contexts) for the video; 0 = as many as scheduler threads.
+  std::size_t render_threads = 0;
+};
+
 /// Runs a validated scenario to its end on a CAF scheduler with `scenario.run.threads` worker
 /// threads (0 = one per hardware thread): spawns the clock, the recorder, one link per pair of
 /// neighbours, one camera node per camera, the scenario script and the fault injector, and
 /// waits for the clock. Throws std::runtime_error when the
-/// run cannot complete (e.g. the output directory is not writable).
+/// run cannot complete (e.g. the output directory is not writable, or no EGL device works
+/// for `--video`). With `options.video`, also spawns a render pool and the video recorder.
+run_outcome run_scenario(const config::scenario& scenario, const run_options& options);
+
+/// The same without video.
 run_outcome run_scenario(const config::scenario& scenario, bool show_progress);
 
 /// The output directory a scenario's run writes to: `run.output_dir`, or `out/<name>`.

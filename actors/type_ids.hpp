@@ -10,6 +10,7 @@
 #include "actors/link_report.hpp"
 #include "actors/ordered_inbox.hpp"
 #include "actors/participant_info.hpp"
+#include "actors/render_pool.hpp"
 #include "actors/run_result.hpp"
 #include "actors/sim_event.hpp"
 #include "actors/tick_ack.hpp"
@@ -31,6 +32,9 @@ CAF_ADD_TYPE_ID(argus, (argus::protocol::net_message))
 CAF_ADD_TYPE_ID(argus, (std::vector<argus::protocol::net_message>))
 CAF_ADD_TYPE_ID(argus, (argus::actors::world_update))
 CAF_ADD_TYPE_ID(argus, (argus::actors::partition_report))
+CAF_ADD_TYPE_ID(argus, (argus::actors::render_request))
+CAF_ADD_TYPE_ID(argus, (argus::actors::render_result))
+CAF_ADD_TYPE_ID(argus, (std::shared_ptr<const argus::world::snapshot>))
 
 CAF_ADD_ATOM(argus, argus::actors, tick_atom, "tick")
 CAF_ADD_ATOM(argus, argus::actors, join_atom, "join")
@@ -48,5 +52,7 @@ CAF_ADD_ATOM(argus, argus::actors, link_cmd_atom, "link_cmd")
 CAF_ADD_ATOM(argus, argus::actors, world_report_atom, "w_report")
 CAF_ADD_ATOM(argus, argus::actors, world_update_atom, "w_update")
 CAF_ADD_ATOM(argus, argus::actors, world_attach_atom, "w_attach")
+CAF_ADD_ATOM(argus, argus::actors, render_atom, "render")
+CAF_ADD_ATOM(argus, argus::actors, world_snapshot_atom, "w_snap")
 
 CAF_END_TYPE_ID_BLOCK(argus)

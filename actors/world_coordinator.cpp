@@ -33,6 +33,7 @@ struct coordinator_setup {
   /// Null for none; shared only to pass it into the actor.
   std::shared_ptr<trajectory_file> trajectories;
   std::vector<caf::actor> partitions;
+  std::vector<std::pair<caf::actor, std::uint64_t>> snapshot_observers;
 };
 
 struct world_coordinator_state {
@@ -134,6 +135,12 @@ void step_world(caf::stateful_actor<world_coordinator_state>* self, tick_context
                world_update{st.current, std::move(owned[i])});
     ctx.sent_mail_to(participant_ids::crowd_partition(i));
   }
+  for (const auto& [observer, id] : setup.snapshot_observers) {
+    mail_stamp stamp{ctx.tick(), static_cast<std::uint8_t>(st.info.tick_phase), st.info.id,
+                     st.sent++};
+    self->send(observer, world_snapshot_atom_v, stamp, st.current);
+    ctx.sent_mail_to(id);
+  }
 }
 
 caf::behavior world_coordinator(caf::stateful_actor<world_coordinator_state>* self,
@@ -205,7 +212,8 @@ world_actors spawn_world(caf::actor_system& system, world_run_settings settings)
   auto coordinator = system.spawn(
       world_coordinator,
       coordinator_setup{settings.station, bounds, std::move(spawner), cs.behaviour.tick_s,
-                        snapshot0, settings.end_tick, std::move(trajectories), partitions});
+                        snapshot0, settings.end_tick, std::move(trajectories), partitions,
+                        std::move(settings.snapshot_observers)});
   for (std::size_t i = 0; i < partitions.size(); ++i) {
     caf::anon_send(partitions[i], world_attach_atom_v, coordinator);
     out.participants.emplace_back(partitions[i], crowd_partition_participant(i));

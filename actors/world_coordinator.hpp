@@ -27,6 +27,11 @@ struct world_run_settings {
   /// Where to write the ground-truth trajectories (CSV, world::trajectory_writer); empty for
   /// none. Written as `<file>.partial` and renamed once the last tick is written.
   std::filesystem::path trajectories;
+  /// Participants (handle, participant id) that receive every new snapshot as
+  /// `(world_snapshot_atom, mail_stamp, std::shared_ptr<const world::snapshot>)`, stamped in
+  /// phase network, so an observer of phase cameras reads it in the same tick (the video
+  /// recorder).
+  std::vector<std::pair<caf::actor, std::uint64_t>> snapshot_observers;
 };
 
 /// The actors of a run's crowd, to join to the clock.

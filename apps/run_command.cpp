@@ -1,7 +1,10 @@
 #include <unistd.h>
 
+#include <cstdio>
 #include <iostream>
 #include <optional>
+#include <tuple>
+#include <utility>
 
 #include "actors/run_scenario.hpp"
 #include "apps/commands.hpp"
@@ -23,7 +26,23 @@ struct run_arguments {
   std::optional<std::string> out;
   bool json = false;
   bool no_progress = false;
+  bool video = false;
+  std::string video_size = "320x240";
 };
+
+// `--video-size WxH`, each side 16 to 4096 pixels.
+std::pair<int, int> parse_video_size(const std::string& text) {
+  int width = 0;
+  int height = 0;
+  char x = 0;
+  char rest = 0;
+  if (std::sscanf(text.c_str(), "%d%c%d%c", &width, &x, &height, &rest) != 3 ||
+      (x != 'x' && x != 'X') || width < 16 || width > 4096 || height < 16 || height > 4096)
+    throw CLI::ValidationError(
+        "--video-size",
+        fmt::format("expected WIDTHxHEIGHT, 16 to 4096 pixels each, e.g. 320x240, got '{}'", text));
+  return {width, height};
+}
 
 // Command-line overrides are validated like the file's own values, and named as options.
 void apply_overrides(const run_arguments& args, config::scenario& s) {
@@ -57,6 +76,7 @@ void print_outcome(const run_arguments& args, const config::scenario& s,
     j["unexpected_down"] = r.unexpected_down;
     j["events"] = (outcome.output_dir / "events.jsonl").string();
     j["summary"] = (outcome.output_dir / "summary.json").string();
+    if (args.video) j["video"] = (outcome.output_dir / "video" / "feeds.avi").string();
     std::cout << j.dump() << '\n';
     return;
   }
@@ -66,6 +86,8 @@ void print_outcome(const run_arguments& args, const config::scenario& s,
       r.wall_seconds > 0 ? r.virtual_seconds / r.wall_seconds : 0.0, r.events_total);
   std::cout << "  events:  " << (outcome.output_dir / "events.jsonl").string() << '\n';
   std::cout << "  summary: " << (outcome.output_dir / "summary.json").string() << '\n';
+  if (args.video)
+    std::cout << "  video:   " << (outcome.output_dir / "video" / "feeds.avi").string() << '\n';
   if (!r.unexpected_down.empty())
     std::cout << "  participants that died unexpectedly: " << r.unexpected_down.size() << '\n';
 }
@@ -86,6 +108,10 @@ void add_run_command(CLI::App& app, int& result) {
   cmd->add_option("--out", args->out, "Output directory (default out/<scenario name>)");
   cmd->add_flag("--json", args->json, "Print the outcome as one JSON object");
   cmd->add_flag("--no-progress", args->no_progress, "No progress line, even on a terminal");
+  cmd->add_flag("--video", args->video,
+                "Also write a mosaic video of every camera's view to DIR/video/feeds.avi");
+  cmd->add_option("--video-size", args->video_size,
+                  "Size of one camera's tile in the video, WxH (default 320x240)");
   cmd->callback([args, &result] {
     config::scenario scenario;
     try {
@@ -96,9 +122,12 @@ void add_run_command(CLI::App& app, int& result) {
       return;
     }
     apply_overrides(*args, scenario);
+    actors::run_options options;
+    std::tie(options.video_width_px, options.video_height_px) = parse_video_size(args->video_size);
+    options.video = args->video;
     try {
-      bool progress = !args->no_progress && isatty(STDERR_FILENO) != 0;
-      auto outcome = actors::run_scenario(scenario, progress);
+      options.show_progress = !args->no_progress && isatty(STDERR_FILENO) != 0;
+      auto outcome = actors::run_scenario(scenario, options);
       print_outcome(*args, scenario, outcome);
       result = ok;
     } catch (const std::exception& e) {

@@ -1,20 +1,32 @@
 // `argus vision localize`: every occurrence of a target patch's colour distribution in an
 // image, by histogram backprojection and the multiscale localiser (paper Fig. 9).
+// `argus vision calibrate`: fits the emulated sensor's error model to the pixel pipeline run
+// side by side with the ground truth on a scenario.
 
+#include <fstream>
 #include <iostream>
 #include <optional>
 
 #include "CLI/CLI.hpp"
+#include "config/duration.hpp"
+#include "config/scenario_error.hpp"
+#include "config/scenario_loader.hpp"
 #include "fmt/format.h"
 #include "nlohmann/json.hpp"
 #include "opencv2/imgcodecs.hpp"
 #include "vision/backprojection.hpp"
+#include "vision/imaging_model.hpp"
 #include "vision/multiscale_localizer.hpp"
+#include "vision/renderer.hpp"
+#include "vision/sensor_calibration.hpp"
+#include "world/crowd.hpp"
+#include "world/layout_loader.hpp"
 
 namespace argus::apps {
 namespace {
 
 constexpr int ok = 0;
+constexpr int run_failed = 1;
 constexpr int bad_input = 2;
 
 struct localize_arguments {
@@ -57,11 +69,120 @@ int localize(const localize_arguments& args) {
   return ok;
 }
 
+struct calibrate_arguments {
+  std::string scenario;
+  std::string start = "30 s";
+  std::string duration = "60 s";
+  std::string every = "1 s";
+  int cameras = 4;
+  int width = 320;
+  int height = 240;
+  std::optional<std::uint64_t> seed;
+  std::string out;
+};
+
+std::optional<double> seconds_of(const std::string& text) {
+  auto d = config::parse_duration(text);
+  if (!d || d->count() < 0.0) return std::nullopt;
+  return d->count();
+}
+
+int calibrate(const calibrate_arguments& args) {
+  const auto start_s = seconds_of(args.start);
+  const auto duration_s = seconds_of(args.duration);
+  const auto every_s = seconds_of(args.every);
+  if (!start_s || !duration_s || !every_s || *every_s <= 0.0) {
+    std::cerr << "argus vision calibrate: --start, --duration, --every: expected durations such "
+                 "as '60 s' (--every > 0)\n";
+    return bad_input;
+  }
+  config::scenario scenario;
+  std::shared_ptr<const world::station> station;
+  try {
+    scenario = config::load_scenario(args.scenario);
+    station = world::station::load(world::layout_path(scenario));
+  } catch (const config::scenario_error& e) {
+    std::cerr << e.what() << '\n';
+    return bad_input;
+  } catch (const std::exception& e) {
+    std::cerr << "argus vision calibrate: " << args.scenario << ": " << e.what() << '\n';
+    return bad_input;
+  }
+  if (args.seed) scenario.run.seed = *args.seed;
+  try {
+    const double tick_s = scenario.run.tick.count();
+    const auto ticks_of = [&](double s) {
+      return static_cast<std::int64_t>(std::llround(s / tick_s));
+    };
+    const std::int64_t first = ticks_of(*start_s);
+    const std::int64_t last = first + ticks_of(*duration_s);
+    const std::int64_t stride = std::max<std::int64_t>(1, ticks_of(*every_s));
+    world::crowd crowd(station, world::crowd_settings::from(scenario));
+    vision::renderer renderer(station);
+    struct camera_run {
+      vision::camera_view view;
+      vision::imaging_model imaging;
+    };
+    std::vector<camera_run> cameras;
+    for (const auto& c : scenario.cameras) {
+      if (static_cast<int>(cameras.size()) >= args.cameras) break;
+      config::imaging_model imaging = c.imaging;
+      imaging.width_px = static_cast<unsigned>(args.width);
+      imaging.height_px = static_cast<unsigned>(args.height);
+      cameras.push_back({{vision::camera_placement::from(c), vision::ptz_camera::from(c).state(),
+                          args.width, args.height},
+                         vision::imaging_model::for_camera(imaging, scenario.run.seed, c.id)});
+    }
+    std::vector<vision::calibration_trial> trials;
+    for (std::int64_t tick = 0; tick <= last; ++tick) {
+      if (tick > 0) crowd.step();
+      if (tick < first || (tick - first) % stride != 0) continue;
+      const double t = static_cast<double>(tick) * tick_s;
+      const auto& frame = *crowd.current();
+      for (auto& camera : cameras) {
+        cv::Mat image = renderer.render(camera.view, frame, t);
+        image =
+            camera.imaging.interlaced()
+                ? camera.imaging.apply(image, renderer.render(camera.view, frame, t + tick_s / 2.0))
+                : camera.imaging.apply(image);
+        auto more = vision::pixel_trials(image, frame, *station, camera.view);
+        trials.insert(trials.end(), more.begin(), more.end());
+      }
+    }
+    const auto model = vision::fit_sensor_model(trials);
+    const auto rates = vision::rates_of(trials);
+    std::cerr << vision::describe(trials);
+    std::cerr << fmt::format("{} trials: miss rate {:.3f}, confusion rate {:.3f}\n", rates.trials,
+                             rates.miss, rates.confusion);
+    std::ofstream out(args.out);
+    if (!out) {
+      std::cerr << fmt::format("argus vision calibrate: cannot write {}\n", args.out);
+      return run_failed;
+    }
+    out << fmt::format(
+        "# Emulated sensor error model (vision/sensor_model.hpp), fitted by:\n"
+        "#   argus vision calibrate {} --start '{}' --duration '{}' --every '{}' --cameras {} "
+        "--width {} --height {}{} --out {}\n"
+        "# {} trials: miss rate {:.3f}, confusion rate {:.3f} (pixel pipeline)\n",
+        args.scenario, args.start, args.duration, args.every, args.cameras, args.width, args.height,
+        args.seed ? fmt::format(" --seed {}", *args.seed) : "", args.out, rates.trials, rates.miss,
+        rates.confusion);
+    out << vision::to_yaml(model);
+    std::cout << fmt::format("{}: {} cameras, {} trials; model written to {}\n", scenario.name,
+                             cameras.size(), rates.trials, args.out);
+  } catch (const std::exception& e) {
+    std::cerr << "argus vision calibrate: " << e.what() << '\n';
+    return run_failed;
+  }
+  return ok;
+}
+
 }  // namespace
 
 /// Adds `argus vision localize` to `app`; its callback sets `result` to the exit code.
 void add_vision_command(CLI::App& app, int& result) {
-  auto* vision = app.add_subcommand("vision", "Low-level visual routines on image files");
+  auto* vision = app.add_subcommand(
+      "vision", "Low-level visual routines on image files; emulated sensor calibration");
   vision->require_subcommand(1);
   auto args = std::make_shared<localize_arguments>();
   auto* cmd = vision->add_subcommand(
@@ -79,6 +200,25 @@ void add_vision_command(CLI::App& app, int& result) {
   cmd->add_option("--max-regions", args->max_regions, "At most this many regions")
       ->check(CLI::PositiveNumber);
   cmd->callback([args, &result] { result = localize(*args); });
+
+  auto calibration = std::make_shared<calibrate_arguments>();
+  auto* fit = vision->add_subcommand(
+      "calibrate",
+      "Fit the emulated sensor's error model: render the scenario's cameras, run the pixel "
+      "pipeline for every visible pedestrian beside the ground truth, write the model (YAML)");
+  fit->add_option("SCENARIO", calibration->scenario, "Scenario YAML file")->required();
+  fit->add_option("--start", calibration->start, "Virtual time of the first frame (default 30 s)");
+  fit->add_option("--duration", calibration->duration, "Virtual time covered (default 60 s)");
+  fit->add_option("--every", calibration->every, "Time between frames used (default 1 s)");
+  fit->add_option("--cameras", calibration->cameras, "Use the first N cameras (default 4)")
+      ->check(CLI::PositiveNumber);
+  fit->add_option("--width", calibration->width, "Image width (default 320)")
+      ->check(CLI::Range(16, 8192));
+  fit->add_option("--height", calibration->height, "Image height (default 240)")
+      ->check(CLI::Range(16, 8192));
+  fit->add_option("--seed", calibration->seed, "Run seed (default: the scenario's)");
+  fit->add_option("--out", calibration->out, "Model file to write (YAML)")->required();
+  fit->callback([calibration, &result] { result = calibrate(*calibration); });
 }
 
 }  // namespace argus::apps

@@ -19,7 +19,7 @@ ctest --test-dir build --output-on-failure -j "$jobs"
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:halt_on_error=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 echo "== ASan+UBSan build and tests"
-argus_build build-asan -DCMAKE_BUILD_TYPE=Debug -DARGUS_SANITIZE=address,undefined \
+argus_build build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DARGUS_SANITIZE=address,undefined \
   -DARGUS_BUILD_BENCH=OFF
 ctest --test-dir build-asan --output-on-failure -j "$jobs"
 

@@ -90,12 +90,27 @@ color_histogram color_histogram::of_bin_indices(const cv::Mat& bin_indices, cons
   CV_Assert(bin_indices.type() == CV_16U);
   color_histogram result(bins);
   auto clipped = region & cv::Rect(0, 0, bin_indices.cols, bin_indices.rows);
-  const auto n = static_cast<std::uint16_t>(bins.count());
+  const std::size_t n = static_cast<std::size_t>(bins.count());
+  // Four integer sub-histograms, so that runs of one colour do not wait on the same counter;
+  // integer counts below 2^24 convert to float exactly, as the float sums were.
+  std::vector<std::uint32_t> parts(4 * (n + 1), 0);
   for (int y = clipped.y; y < clipped.y + clipped.height; ++y) {
     const auto* in = bin_indices.ptr<std::uint16_t>(y);
-    for (int x = clipped.x; x < clipped.x + clipped.width; ++x)
-      if (in[x] < n) result.counts_[in[x]] += 1.0f;
+    int x = clipped.x;
+    const int end = clipped.x + clipped.width;
+    // Out-of-range indices count into bin n of each part, which is dropped.
+    auto slot = [n](std::uint16_t i) { return i < n ? std::size_t{i} : n; };
+    for (; x + 4 <= end; x += 4) {
+      ++parts[slot(in[x])];
+      ++parts[(n + 1) + slot(in[x + 1])];
+      ++parts[2 * (n + 1) + slot(in[x + 2])];
+      ++parts[3 * (n + 1) + slot(in[x + 3])];
+    }
+    for (; x < end; ++x) ++parts[slot(in[x])];
   }
+  for (std::size_t i = 0; i < n; ++i)
+    result.counts_[i] = static_cast<float>(parts[i] + parts[(n + 1) + i] + parts[2 * (n + 1) + i] +
+                                           parts[3 * (n + 1) + i]);
   return result;
 }
 

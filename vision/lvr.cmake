@@ -7,3 +7,10 @@ list(APPEND argus_vision_sources
   ${CMAKE_CURRENT_LIST_DIR}/tracker.cpp
   ${CMAKE_CURRENT_LIST_DIR}/fixate_zoom.cpp
   ${CMAKE_CURRENT_LIST_DIR}/relevance.cpp)
+
+# Emulated sensor (ground truth through an error model) and its YAML parameters.
+list(APPEND argus_vision_sources
+  ${CMAKE_CURRENT_LIST_DIR}/sensor_model.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/emulated_sensor.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/sensor_calibration.cpp)
+list(APPEND argus_vision_private_libs yaml-cpp)

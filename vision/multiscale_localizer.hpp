@@ -71,7 +71,8 @@ class multiscale_localizer {
   /// Every target in the CV_32F backprojection B, in the order found: Fig. 9, steps 1-6,
   /// repeated until the first rejection (score <= rho), an empty B, or max_regions.
   ///
-  /// Step 1: B_l = B * K_l for every l, by box sums over one integral image of B.
+  /// Step 1: B_l = B * K_l for every l, by box sums over one integral image of B (evaluated
+  ///         where needed: summed over l everywhere, per l only near the peak).
   /// Step 2: (x*, y*) = argmax sum_l B_l.
   /// Step 3: per l, the peak (x_l*, y_l*) of B_l inside K_l centred at (x*, y*).
   /// Step 4: l* = argmax_l sum_{K}(B_l(x_l*, y_l*) - B_l(x, y))^2 / |K|, over K clipped to
@@ -88,19 +89,28 @@ class multiscale_localizer {
   const localizer_settings& settings() const noexcept { return settings_; }
 
   /// The B_l of the last localize() call after all removals, one per scale (for tests).
-  const std::vector<cv::Mat>& responses() const noexcept { return responses_; }
+  /// Computed on demand from the final integral image.
+  const std::vector<cv::Mat>& responses() const;
 
  private:
-  void compute_responses(const cv::Rect& area);
+  void update_integral(int first_row);
+  void compute_sum(const cv::Rect& area);
+  const double* row(int y) const;
+  void compute_response(int l, const cv::Rect& area, cv::Mat& out) const;
 
   localizer_settings settings_;
   std::vector<int> scales_;
   int pad_x_ = 0;
-  int pad_y_ = 0;
-  cv::Mat padded_;
+  // B with the accepted boxes zeroed (step 6).
+  cv::Mat work_;
+  // Integral image of work_ between zero borders of pad_x_ columns.
   cv::Mat integral_;
-  std::vector<cv::Mat> responses_;
+  // Running sums along each row of work_, a step of the integral image.
+  cv::Mat prefix_;
+  // Filled by responses() on demand.
+  mutable std::vector<cv::Mat> responses_;
   cv::Mat sum_;
+  cv::Mat scratch_;
 };
 
 /// Swain and Ballard's single-scale localisation [45] with the (6l + 1) x (2l + 1) kernel of

@@ -1,0 +1,228 @@
+#include "actors/video_recorder.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <opencv2/imgproc.hpp>
+#include <opencv2/videoio.hpp>
+#include <optional>
+#include <stdexcept>
+#include <system_error>
+
+#include "actors/ordered_inbox.hpp"
+#include "actors/participant_ids.hpp"
+#include "actors/render_pool.hpp"
+#include "actors/tick_context.hpp"
+#include "actors/type_ids.hpp"
+#include "fmt/format.h"
+#include "vision/imaging_model.hpp"
+#include "vision/ptz_camera.hpp"
+
+namespace argus::actors {
+namespace {
+
+// Gap between tiles, pixels (as `argus feeds`).
+constexpr int tile_gap_px = 2;
+
+struct video_file {
+  std::filesystem::path final_path;
+  std::filesystem::path partial_path;
+  cv::VideoWriter writer;
+};
+
+/// One camera as the recorder sees it: where it looks and its imaging model, which is away
+/// (travelling with a request) while its frame is being rendered.
+struct recorded_camera {
+  int id = 0;
+  vision::camera_view view;
+  std::optional<vision::imaging_model> imaging;
+  config::imaging_model imaging_settings;
+  cv::Rect tile;
+};
+
+struct video_recorder_state {
+  participant_info info;
+  video_settings settings;
+  /// Null once the file is complete (or for none); shared only to pass it into the actor.
+  std::shared_ptr<video_file> file;
+  std::vector<recorded_camera> cameras;
+  ordered_inbox<std::shared_ptr<const world::snapshot>> snapshots;
+  /// The frame being assembled and what the tick waits for.
+  cv::Mat mosaic;
+  std::size_t pending = 0;
+  std::optional<tick_context> ctx;
+  caf::actor clock;
+};
+
+// The camera id in the tile's top-left corner, white on a dark box, as `argus feeds` draws it.
+void label(cv::Mat& tile, int id) {
+  const std::string text = fmt::format("C{}", id);
+  const double scale = std::max(0.4, tile.cols / 640.0);
+  int baseline = 0;
+  const cv::Size size = cv::getTextSize(text, cv::FONT_HERSHEY_SIMPLEX, scale, 1, &baseline);
+  cv::rectangle(tile, {0, 0}, {size.width + 8, size.height + baseline + 6}, {20, 20, 20},
+                cv::FILLED);
+  cv::putText(tile, text, {4, size.height + 3}, cv::FONT_HERSHEY_SIMPLEX, scale, {255, 255, 255}, 1,
+              cv::LINE_AA);
+}
+
+cv::Size mosaic_size(std::size_t cameras, int width, int height, int& columns) {
+  const int n = static_cast<int>(std::max<std::size_t>(cameras, 1));
+  columns = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(n))));
+  const int rows = (n + columns - 1) / columns;
+  return {columns * width + (columns - 1) * tile_gap_px, rows * height + (rows - 1) * tile_gap_px};
+}
+
+// Appends the assembled frame; after the last tick the file is closed and gets its name.
+void finish_tick(caf::stateful_actor<video_recorder_state>* self) {
+  auto& st = self->state;
+  if (st.file) {
+    st.file->writer.write(st.mosaic);
+    if (st.ctx->tick() + 1 >= st.settings.end_tick) {
+      st.file->writer.release();
+      std::error_code ignored;
+      std::filesystem::rename(st.file->partial_path, st.file->final_path, ignored);
+      st.file.reset();
+    }
+  }
+  self->send(st.clock, std::move(*st.ctx).finish());
+  st.ctx.reset();
+  st.clock = nullptr;
+}
+
+void tile_done(caf::stateful_actor<video_recorder_state>* self, std::size_t k, cv::Mat image) {
+  auto& st = self->state;
+  auto& camera = st.cameras[k];
+  if (image.empty()) image = cv::Mat(camera.tile.size(), CV_8UC3, cv::Scalar(0, 0, 0));
+  label(image, camera.id);
+  image.copyTo(st.mosaic(camera.tile));
+  if (--st.pending == 0) finish_tick(self);
+}
+
+void record_tick(caf::stateful_actor<video_recorder_state>* self,
+                 const std::shared_ptr<const world::snapshot>& frame) {
+  auto& st = self->state;
+  st.mosaic.setTo(cv::Scalar(0, 0, 0));
+  st.pending = st.cameras.size();
+  const double time_s = frame->time().count();
+  for (std::size_t k = 0; k < st.cameras.size(); ++k) {
+    auto& camera = st.cameras[k];
+    render_request request;
+    request.view = camera.view;
+    request.frame = frame;
+    request.time_s = time_s;
+    request.field_interval_s = st.settings.tick_seconds / 2.0;
+    request.imaging = std::move(camera.imaging);
+    self->request(st.settings.render_pool, caf::infinite, render_atom_v, std::move(request))
+        .then(
+            [self, k](render_result& result) {
+              self->state.cameras[k].imaging = std::move(result.imaging);
+              tile_done(self, k, std::move(result.image));
+            },
+            [self, k](caf::error& err) {
+              auto& st = self->state;
+              // The camera's RNG went down with the request: its noise restarts from its seed
+              // (the run is broken anyway; the event says so).
+              if (st.settings.imaging)
+                st.cameras[k].imaging = vision::imaging_model::for_camera(
+                    st.cameras[k].imaging_settings, st.settings.run_seed, st.cameras[k].id);
+              st.ctx->emit("video_render_failed",
+                           fmt::format(R"("camera":{},"error_code":{})", st.cameras[k].id,
+                                       static_cast<int>(err.code())));
+              tile_done(self, k, {});
+            });
+  }
+  if (st.cameras.empty()) finish_tick(self);
+}
+
+caf::behavior video_recorder(caf::stateful_actor<video_recorder_state>* self,
+                             video_settings settings, std::shared_ptr<video_file> file) {
+  auto& st = self->state;
+  st.info = video_recorder_participant();
+  st.file = std::move(file);
+  auto cameras = settings.cameras;
+  std::sort(cameras.begin(), cameras.end(),
+            [](const auto& a, const auto& b) { return a.id < b.id; });
+  int columns = 1;
+  st.mosaic =
+      cv::Mat(mosaic_size(cameras.size(), settings.tile_width_px, settings.tile_height_px, columns),
+              CV_8UC3, cv::Scalar(0, 0, 0));
+  for (std::size_t k = 0; k < cameras.size(); ++k) {
+    const auto& c = cameras[k];
+    recorded_camera rc;
+    rc.id = c.id;
+    rc.view = {vision::camera_placement::from(c), vision::ptz_camera::from(c).state(),
+               settings.tile_width_px, settings.tile_height_px};
+    if (settings.imaging) {
+      config::imaging_model imaging = c.imaging;
+      imaging.width_px = static_cast<unsigned>(settings.tile_width_px);
+      imaging.height_px = static_cast<unsigned>(settings.tile_height_px);
+      rc.imaging_settings = imaging;
+      rc.imaging = vision::imaging_model::for_camera(imaging, settings.run_seed, c.id);
+    }
+    const int i = static_cast<int>(k);
+    rc.tile = cv::Rect((i % columns) * (settings.tile_width_px + tile_gap_px),
+                       (i / columns) * (settings.tile_height_px + tile_gap_px),
+                       settings.tile_width_px, settings.tile_height_px);
+    st.cameras.push_back(std::move(rc));
+  }
+  st.settings = std::move(settings);
+  return {
+      [self](world_snapshot_atom, const mail_stamp& stamp,
+             std::shared_ptr<const world::snapshot>& frame) {
+        self->state.snapshots.put(stamp, std::move(frame));
+      },
+      [self](tick_atom, std::int64_t tick, std::uint8_t p) {
+        auto& st = self->state;
+        st.ctx.emplace(st.info.id, st.info.name, tick, st.info.tick_phase);
+        st.clock = caf::actor_cast<caf::actor>(self->current_sender());
+        std::shared_ptr<const world::snapshot> latest;
+        for (auto& [stamp, frame] : st.snapshots.take_due(tick, p)) latest = std::move(frame);
+        if (!latest) {
+          st.ctx->emit("video_out_of_step", fmt::format(R"("tick":{})", tick));
+          self->send(st.clock, std::move(*st.ctx).finish());
+          st.ctx.reset();
+          st.clock = nullptr;
+          return;
+        }
+        record_tick(self, latest);
+      },
+  };
+}
+
+}  // namespace
+
+participant_info video_recorder_participant() {
+  participant_info info;
+  info.id = participant_ids::video_recorder;
+  info.name = "video";
+  info.tick_phase = phase::cameras;
+  info.mode = wake_mode::every_tick;
+  return info;
+}
+
+caf::actor spawn_video_recorder(caf::actor_system& system, video_settings settings) {
+  if (settings.tick_seconds <= 0.0) throw std::invalid_argument("video: tick must be positive");
+  if (settings.tile_width_px < 16 || settings.tile_height_px < 16)
+    throw std::invalid_argument("video: tiles must be at least 16x16 pixels");
+  auto file = std::make_shared<video_file>();
+  file->final_path = settings.file;
+  // `feeds.partial.avi` rather than `feeds.avi.partial`: OpenCV's writer refuses a name that
+  // does not end in .avi.
+  file->partial_path = settings.file;
+  file->partial_path.replace_extension(".partial" + settings.file.extension().string());
+  std::error_code ignored;
+  if (settings.file.has_parent_path())
+    std::filesystem::create_directories(settings.file.parent_path(), ignored);
+  int columns = 1;
+  const auto size = mosaic_size(settings.cameras.size(), settings.tile_width_px,
+                                settings.tile_height_px, columns);
+  // OpenCV's own MJPEG/AVI writer: needs no FFmpeg.
+  file->writer.open(file->partial_path.string(), cv::CAP_OPENCV_MJPEG,
+                    cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), 1.0 / settings.tick_seconds, size);
+  if (!file->writer.isOpened())
+    throw std::runtime_error("cannot write " + file->partial_path.string());
+  return system.spawn(video_recorder, std::move(settings), std::move(file));
+}
+
+}  // namespace argus::actors

@@ -1,0 +1,117 @@
+// The render pool renders exactly what a direct vision::renderer + imaging model renders,
+// whichever worker serves; `run --video` writes one mosaic frame per tick.
+
+#include "actors/render_pool.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <opencv2/core.hpp>
+#include <opencv2/videoio.hpp>
+#include <set>
+
+#include "actors/run_scenario.hpp"
+#include "actors/system_config.hpp"
+#include "actors/type_ids.hpp"
+#include "config/scenario_loader.hpp"
+#include "vision/renderer.hpp"
+#include "world/crowd.hpp"
+#include "world/layout_loader.hpp"
+
+namespace argus::actors {
+namespace {
+
+config::imaging_model degraded(int width, int height) {
+  config::imaging_model m;
+  m.width_px = static_cast<unsigned>(width);
+  m.height_px = static_cast<unsigned>(height);
+  m.color_response_enabled = true;
+  m.response.hue_offset_deg = 4.0;
+  m.noise_sigma = 4.0;
+  m.dropout_fraction = 0.002;
+  m.jpeg_quality = 75;
+  return m;
+}
+
+TEST(render_pool, renders_the_same_bytes_as_a_direct_renderer_whichever_worker_serves) {
+  auto scenario = config::load_scenario(ARGUS_SOURCE_DIR "/scenarios/penn_station.yaml");
+  auto station = world::station::load(world::layout_path(scenario));
+  auto settings = world::crowd_settings::from(scenario);
+  settings.population = 40;
+  world::crowd crowd(station, settings);
+  const int width = 160;
+  const int height = 120;
+  std::vector<vision::camera_view> views;
+  std::vector<vision::imaging_model> direct_models;
+  std::vector<std::optional<vision::imaging_model>> pool_models;
+  for (const auto& c : scenario.cameras) {
+    views.push_back(
+        {vision::camera_placement::from(c), vision::ptz_camera::from(c).state(), width, height});
+    direct_models.push_back(
+        vision::imaging_model::for_camera(degraded(width, height), scenario.run.seed, c.id));
+    pool_models.push_back(direct_models.back());
+  }
+  vision::renderer direct(station);
+  system_config cfg(2);
+  caf::actor_system system{cfg};
+  auto pool = spawn_render_pool(system, station, 2);
+  std::set<std::size_t> workers;
+  {
+    caf::scoped_actor self{system};
+    for (int tick = 0; tick < 3; ++tick) {
+      crowd.step();
+      auto frame = crowd.current();
+      const double t = frame->time().count();
+      // Every camera's request goes out before any answer is read: the pool renders them
+      // concurrently, and each camera's noise still follows its own frames in tick order.
+      std::vector<caf::response_handle<caf::blocking_actor, caf::message, true>> pending;
+      for (std::size_t k = 0; k < views.size(); ++k) {
+        render_request request{views[k], frame, t, 1.0 / 30.0, std::move(pool_models[k])};
+        pending.push_back(self->request(pool.front, caf::infinite, render_atom_v, request));
+      }
+      for (std::size_t k = 0; k < views.size(); ++k) {
+        cv::Mat expected = direct_models[k].apply(direct.render(views[k], *frame, t));
+        pending[k].receive(
+            [&](render_result& result) {
+              workers.insert(result.worker);
+              pool_models[k] = std::move(result.imaging);
+              ASSERT_EQ(result.image.size(), expected.size());
+              EXPECT_EQ(cv::norm(result.image, expected, cv::NORM_INF), 0.0)
+                  << "camera " << scenario.cameras[k].id << " tick " << tick;
+            },
+            [&](caf::error& err) { FAIL() << system.render(err); });
+      }
+    }
+  }
+  EXPECT_EQ(workers, (std::set<std::size_t>{0, 1}));
+  caf::anon_send_exit(pool.front, caf::exit_reason::user_shutdown);
+}
+
+TEST(render_pool, run_with_video_writes_one_frame_per_tick) {
+  auto scenario = config::load_scenario(ARGUS_SOURCE_DIR "/scenarios/penn_station.yaml");
+  scenario.run.duration = std::chrono::duration<double>{2.0};
+  scenario.run.threads = 2;
+  scenario.run.output_dir = std::filesystem::temp_directory_path() / "argus_render_pool_test";
+  std::filesystem::remove_all(scenario.run.output_dir);
+  run_options options;
+  options.video = true;
+  options.video_width_px = 160;
+  options.video_height_px = 120;
+  auto outcome = run_scenario(scenario, options);
+  const auto file = outcome.output_dir / "video" / "feeds.avi";
+  ASSERT_TRUE(std::filesystem::exists(file));
+  EXPECT_FALSE(std::filesystem::exists(outcome.output_dir / "video" / "feeds.partial.avi"));
+  cv::VideoCapture video(file.string());
+  ASSERT_TRUE(video.isOpened());
+  std::int64_t frames = 0;
+  cv::Mat image;
+  while (video.read(image)) {
+    ++frames;
+    EXPECT_EQ(image.cols, 4 * 160 + 3 * 2);
+  }
+  EXPECT_EQ(frames, outcome.result.ticks);
+  EXPECT_EQ(outcome.result.ticks, 30);
+}
+
+}  // namespace
+}  // namespace argus::actors

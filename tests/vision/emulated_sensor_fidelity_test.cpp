@@ -1,0 +1,71 @@
+// The shipped emulated sensor model (scenarios/sensor_model.yaml, fitted by `argus vision
+// calibrate` on penn_station, seed of the scenario, t = 30..90 s) against the pixel pipeline
+// on a held-out run: another seed and another time window, same four cameras at 320 x 240.
+// Tolerances: miss rate within 0.05, confusion rate (few samples: the pixel pipeline finds
+// few pedestrians) within 0.25.
+#include <gtest/gtest.h>
+
+#include "config/scenario_loader.hpp"
+#include "vision/imaging_model.hpp"
+#include "vision/renderer.hpp"
+#include "vision/sensor_calibration.hpp"
+#include "world/crowd.hpp"
+#include "world/layout_loader.hpp"
+
+namespace argus::vision {
+namespace {
+
+TEST(emulated_sensor_fidelity, rates_match_the_pixel_pipeline_on_a_held_out_run) {
+  auto scenario = config::load_scenario(ARGUS_SOURCE_DIR "/scenarios/penn_station.yaml");
+  const auto model = load_sensor_model(ARGUS_SOURCE_DIR "/scenarios/sensor_model.yaml");
+  ASSERT_GT(model.samples, 1000);
+  scenario.run.seed += 1000;  // held out: not the calibration's seed
+  const auto station = world::station::load(world::layout_path(scenario));
+  world::crowd crowd(station, world::crowd_settings::from(scenario));
+  renderer render(station);
+  const double tick_s = scenario.run.tick.count();
+  const auto ticks_of = [&](double s) { return static_cast<int>(std::lround(s / tick_s)); };
+  std::vector<calibration_trial> pixels, emulated;
+  std::vector<camera_view> views;
+  std::vector<imaging_model> imaging;
+  std::vector<emulated_sensor> sensors;
+  for (std::size_t c = 0; c < 4 && c < scenario.cameras.size(); ++c) {
+    const auto& camera = scenario.cameras[c];
+    auto settings = camera.imaging;
+    settings.width_px = 320;
+    settings.height_px = 240;
+    views.push_back({camera_placement::from(camera), ptz_camera::from(camera).state(), 320, 240});
+    imaging.push_back(imaging_model::for_camera(settings, scenario.run.seed, camera.id));
+    sensors.push_back(emulated_sensor::for_camera(model, scenario.run.seed, camera.id));
+  }
+  // Held-out window t = 100..130 s, a frame every second.
+  const int first = ticks_of(100.0), last = ticks_of(130.0), stride = ticks_of(1.0);
+  for (int tick = 1; tick <= last; ++tick) {
+    crowd.step();
+    if (tick < first || (tick - first) % stride != 0) continue;
+    const auto& frame = *crowd.current();
+    for (std::size_t c = 0; c < views.size(); ++c) {
+      cv::Mat image = render.render(views[c], frame, tick * tick_s);
+      image = imaging[c].interlaced()
+                  ? imaging[c].apply(image, render.render(views[c], frame, (tick + 0.5) * tick_s))
+                  : imaging[c].apply(image);
+      auto p = pixel_trials(image, frame, *station, views[c]);
+      pixels.insert(pixels.end(), p.begin(), p.end());
+      auto e = emulated_trials(sensors[c], frame, *station, views[c]);
+      emulated.insert(emulated.end(), e.begin(), e.end());
+    }
+  }
+  const auto truth = rates_of(pixels);
+  const auto emulation = rates_of(emulated);
+  ASSERT_GT(truth.trials, 500);
+  EXPECT_EQ(truth.trials, emulation.trials);
+  EXPECT_NEAR(emulation.miss, truth.miss, 0.05);
+  EXPECT_NEAR(emulation.confusion, truth.confusion, 0.25);
+  std::printf(
+      "held out: %d trials; miss pixel %.3f emulated %.3f; confusion pixel %.3f emulated "
+      "%.3f\n",
+      truth.trials, truth.miss, emulation.miss, truth.confusion, emulation.confusion);
+}
+
+}  // namespace
+}  // namespace argus::vision
