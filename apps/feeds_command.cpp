@@ -13,6 +13,7 @@
 #include "CLI/CLI.hpp"
 #include "apps/commands.hpp"
 #include "apps/output_file.hpp"
+#include "apps/time_option.hpp"
 #include "config/duration.hpp"
 #include "config/scenario_error.hpp"
 #include "config/scenario_loader.hpp"
@@ -36,18 +37,6 @@ struct feeds_arguments {
   int height = 240;
   std::string out;
 };
-
-std::optional<double> seconds_of(const std::string& text) {
-  if (auto d = config::parse_duration(text)) {
-    if (d->count() < 0.0) return std::nullopt;
-    return d->count();
-  }
-  double value = 0.0;
-  auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (ec != std::errc{} || end != text.data() + text.size() || !std::isfinite(value) || value < 0.0)
-    return std::nullopt;
-  return value;
-}
 
 // The camera id in the tile's top-left corner, white on a dark box, as on a monitor wall.
 void label(cv::Mat& tile, int id) {

@@ -9,6 +9,7 @@
 
 #include "apps/commands.hpp"
 #include "apps/output_file.hpp"
+#include "apps/time_option.hpp"
 #include "config/duration.hpp"
 #include "config/scenario_error.hpp"
 #include "config/scenario_loader.hpp"
@@ -27,20 +28,6 @@ struct plan_arguments {
   std::string trails = "10 s";
   std::string out;
 };
-
-// A duration with a unit ("90 s", "2 min") or a bare number of seconds; nullopt if neither
-// or negative.
-std::optional<double> seconds_of(const std::string& text) {
-  if (auto d = config::parse_duration(text)) {
-    if (d->count() < 0.0) return std::nullopt;
-    return d->count();
-  }
-  double value = 0.0;
-  auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (ec != std::errc{} || end != text.data() + text.size() || !std::isfinite(value) || value < 0.0)
-    return std::nullopt;
-  return value;
-}
 
 int plan(const plan_arguments& args) {
   auto time_s = seconds_of(args.time);

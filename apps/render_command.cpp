@@ -10,6 +10,7 @@
 #include "CLI/CLI.hpp"
 #include "apps/commands.hpp"
 #include "apps/output_file.hpp"
+#include "apps/time_option.hpp"
 #include "config/duration.hpp"
 #include "config/scenario_error.hpp"
 #include "config/scenario_loader.hpp"
@@ -34,20 +35,6 @@ struct render_arguments {
   std::optional<int> height;
   std::string out;
 };
-
-// A duration with a unit ("90 s", "2 min") or a bare number of seconds; nullopt if neither
-// or negative.
-std::optional<double> seconds_of(const std::string& text) {
-  if (auto d = config::parse_duration(text)) {
-    if (d->count() < 0.0) return std::nullopt;
-    return d->count();
-  }
-  double value = 0.0;
-  auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (ec != std::errc{} || end != text.data() + text.size() || !std::isfinite(value) || value < 0.0)
-    return std::nullopt;
-  return value;
-}
 
 int render(const render_arguments& args) {
   auto time_s = seconds_of(args.time);

@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "CLI/CLI.hpp"
+#include "apps/time_option.hpp"
 #include "config/duration.hpp"
 #include "config/scenario_error.hpp"
 #include "config/scenario_loader.hpp"
@@ -80,12 +81,6 @@ struct calibrate_arguments {
   std::optional<std::uint64_t> seed;
   std::string out;
 };
-
-std::optional<double> seconds_of(const std::string& text) {
-  auto d = config::parse_duration(text);
-  if (!d || d->count() < 0.0) return std::nullopt;
-  return d->count();
-}
 
 int calibrate(const calibrate_arguments& args) {
   const auto start_s = seconds_of(args.start);
