@@ -23,7 +23,7 @@ argus_build build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DARGUS_SANITIZE=addres
   -DARGUS_BUILD_BENCH=OFF
 ctest --test-dir build-asan --output-on-failure -j "$jobs"
 
-export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1"
+export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1:suppressions=$ARGUS_ROOT/tests/tsan.supp"
 echo "== TSan build and actor-layer tests (against a TSan build of CAF)"
 scripts/tsan_caf.sh "$ARGUS_ROOT/build-tsan/caf"
 argus_build build-tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DARGUS_SANITIZE=thread \
