@@ -5,6 +5,7 @@
 // for runs with thousands of cameras (issue 5).
 
 #include <cstdint>
+#include <deque>
 #include <vector>
 
 #include "opencv2/core.hpp"
@@ -110,7 +111,8 @@ class emulated_sensor {
   histogram_bins bins_;
   world::rng random_;
   // Signatures by appearance, cached: palettes are small, so few distinct ones.
-  std::vector<std::pair<world::appearance, color_histogram>> signatures_;
+  // A deque: signature_of hands out references that must survive later insertions.
+  std::deque<std::pair<world::appearance, color_histogram>> signatures_;
 };
 
 }  // namespace argus::vision
