@@ -15,6 +15,7 @@
 #include "actors/tick_context.hpp"
 #include "actors/type_ids.hpp"
 #include "fmt/format.h"
+#include "vision/feed_mosaic.hpp"
 #include "vision/imaging_model.hpp"
 #include "vision/ptz_camera.hpp"
 
@@ -22,7 +23,6 @@ namespace argus::actors {
 namespace {
 
 // Gap between tiles, pixels (as `argus feeds`).
-constexpr int tile_gap_px = 2;
 
 struct video_file {
   std::filesystem::path final_path;
@@ -54,25 +54,6 @@ struct video_recorder_state {
   caf::actor clock;
 };
 
-// The camera id in the tile's top-left corner, white on a dark box, as `argus feeds` draws it.
-void label(cv::Mat& tile, int id) {
-  const std::string text = fmt::format("C{}", id);
-  const double scale = std::max(0.4, tile.cols / 640.0);
-  int baseline = 0;
-  const cv::Size size = cv::getTextSize(text, cv::FONT_HERSHEY_SIMPLEX, scale, 1, &baseline);
-  cv::rectangle(tile, {0, 0}, {size.width + 8, size.height + baseline + 6}, {20, 20, 20},
-                cv::FILLED);
-  cv::putText(tile, text, {4, size.height + 3}, cv::FONT_HERSHEY_SIMPLEX, scale, {255, 255, 255}, 1,
-              cv::LINE_AA);
-}
-
-cv::Size mosaic_size(std::size_t cameras, int width, int height, int& columns) {
-  const int n = static_cast<int>(std::max<std::size_t>(cameras, 1));
-  columns = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(n))));
-  const int rows = (n + columns - 1) / columns;
-  return {columns * width + (columns - 1) * tile_gap_px, rows * height + (rows - 1) * tile_gap_px};
-}
-
 // Appends the assembled frame; after the last tick the file is closed and gets its name.
 void finish_tick(caf::stateful_actor<video_recorder_state>* self) {
   auto& st = self->state;
@@ -94,7 +75,7 @@ void tile_done(caf::stateful_actor<video_recorder_state>* self, std::size_t k, c
   auto& st = self->state;
   auto& camera = st.cameras[k];
   if (image.empty()) image = cv::Mat(camera.tile.size(), CV_8UC3, cv::Scalar(0, 0, 0));
-  label(image, camera.id);
+  vision::label_feed(image, camera.id);
   image.copyTo(st.mosaic(camera.tile));
   if (--st.pending == 0) finish_tick(self);
 }
@@ -143,10 +124,9 @@ caf::behavior video_recorder(caf::stateful_actor<video_recorder_state>* self,
   auto cameras = settings.cameras;
   std::sort(cameras.begin(), cameras.end(),
             [](const auto& a, const auto& b) { return a.id < b.id; });
-  int columns = 1;
-  st.mosaic =
-      cv::Mat(mosaic_size(cameras.size(), settings.tile_width_px, settings.tile_height_px, columns),
-              CV_8UC3, cv::Scalar(0, 0, 0));
+  const auto layout = vision::feed_mosaic_layout::for_feeds(cameras.size(), settings.tile_width_px,
+                                                            settings.tile_height_px);
+  st.mosaic = cv::Mat(layout.size(), CV_8UC3, cv::Scalar(0, 0, 0));
   for (std::size_t k = 0; k < cameras.size(); ++k) {
     const auto& c = cameras[k];
     recorded_camera rc;
@@ -160,10 +140,7 @@ caf::behavior video_recorder(caf::stateful_actor<video_recorder_state>* self,
       rc.imaging_settings = imaging;
       rc.imaging = vision::imaging_model::for_camera(imaging, settings.run_seed, c.id);
     }
-    const int i = static_cast<int>(k);
-    rc.tile = cv::Rect((i % columns) * (settings.tile_width_px + tile_gap_px),
-                       (i / columns) * (settings.tile_height_px + tile_gap_px),
-                       settings.tile_width_px, settings.tile_height_px);
+    rc.tile = layout.tile(k);
     st.cameras.push_back(std::move(rc));
   }
   st.settings = std::move(settings);
@@ -214,9 +191,9 @@ caf::actor spawn_video_recorder(caf::actor_system& system, video_settings settin
   std::error_code ignored;
   if (settings.file.has_parent_path())
     std::filesystem::create_directories(settings.file.parent_path(), ignored);
-  int columns = 1;
-  const auto size = mosaic_size(settings.cameras.size(), settings.tile_width_px,
-                                settings.tile_height_px, columns);
+  const auto size = vision::feed_mosaic_layout::for_feeds(
+                        settings.cameras.size(), settings.tile_width_px, settings.tile_height_px)
+                        .size();
   // OpenCV's own MJPEG/AVI writer: needs no FFmpeg.
   file->writer.open(file->partial_path.string(), cv::CAP_OPENCV_MJPEG,
                     cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), 1.0 / settings.tick_seconds, size);

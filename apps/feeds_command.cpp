@@ -18,6 +18,7 @@
 #include "config/scenario_error.hpp"
 #include "config/scenario_loader.hpp"
 #include "fmt/format.h"
+#include "vision/feed_mosaic.hpp"
 #include "vision/imaging_model.hpp"
 #include "vision/renderer.hpp"
 #include "world/crowd.hpp"
@@ -37,18 +38,6 @@ struct feeds_arguments {
   int height = 240;
   std::string out;
 };
-
-// The camera id in the tile's top-left corner, white on a dark box, as on a monitor wall.
-void label(cv::Mat& tile, int id) {
-  const std::string text = fmt::format("C{}", id);
-  const double scale = std::max(0.4, tile.cols / 640.0);
-  int baseline = 0;
-  const cv::Size size = cv::getTextSize(text, cv::FONT_HERSHEY_SIMPLEX, scale, 1, &baseline);
-  cv::rectangle(tile, {0, 0}, {size.width + 8, size.height + baseline + 6}, {20, 20, 20},
-                cv::FILLED);
-  cv::putText(tile, text, {4, size.height + 3}, cv::FONT_HERSHEY_SIMPLEX, scale, {255, 255, 255}, 1,
-              cv::LINE_AA);
-}
 
 int feeds(const feeds_arguments& args) {
   auto time_s = seconds_of(args.time);
@@ -93,11 +82,9 @@ int feeds(const feeds_arguments& args) {
     std::sort(cameras.begin(), cameras.end(),
               [](const auto& a, const auto& b) { return a.id < b.id; });
     const int n = static_cast<int>(cameras.size());
-    const int columns = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(n))));
-    const int rows = (n + columns - 1) / columns;
-    const int gap = 2;
-    cv::Mat mosaic(rows * args.height + (rows - 1) * gap,
-                   columns * args.width + (columns - 1) * gap, CV_8UC3, cv::Scalar(0, 0, 0));
+    const auto layout =
+        vision::feed_mosaic_layout::for_feeds(cameras.size(), args.width, args.height);
+    cv::Mat mosaic(layout.size(), CV_8UC3, cv::Scalar(0, 0, 0));
     vision::renderer renderer(station);
     for (int k = 0; k < n; ++k) {
       const auto& camera = cameras[static_cast<std::size_t>(k)];
@@ -113,9 +100,8 @@ int feeds(const feeds_arguments& args) {
                    ? model.apply(tile, renderer.render(view, frame, t + tick_s / 2.0))
                    : model.apply(tile);
       }
-      label(tile, camera.id);
-      tile.copyTo(mosaic(cv::Rect((k % columns) * (args.width + gap),
-                                  (k / columns) * (args.height + gap), args.width, args.height)));
+      vision::label_feed(tile, camera.id);
+      tile.copyTo(mosaic(layout.tile(static_cast<std::size_t>(k))));
     }
     make_parent_folders(args.out);
     if (!cv::imwrite(args.out, mosaic)) {
