@@ -2,20 +2,16 @@
 
 #include <vector>
 
-#include "actors/ordered_inbox.hpp"
+#include "actors/net_arrivals.hpp"
 #include "actors/participant_ids.hpp"
 #include "actors/tick_context.hpp"
 #include "actors/type_ids.hpp"
 #include "fmt/format.h"
+#include "protocol/link_model.hpp"
 #include "protocol/node_network.hpp"
 
 namespace argus::actors {
 namespace {
-
-struct arrival {
-  int from = 0;
-  std::vector<protocol::net_message> messages;
-};
 
 struct camera_node_state {
   participant_info info;
@@ -24,7 +20,10 @@ struct camera_node_state {
   bool announced = false;
   link_directory links;
   std::unique_ptr<protocol::node_network> network;
-  ordered_inbox<arrival> arrivals;
+  net_arrivals arrivals;
+  // What this node sends on a link is never due before this many ticks: the link need not
+  // read it sooner (docs/network.md, "Lookahead").
+  std::int64_t link_lookahead = 1;
   std::uint64_t mail_seq = 0;
 };
 
@@ -46,7 +45,7 @@ void flush_network(caf::stateful_actor<camera_node_state>* self, tick_context& c
     mail_stamp stamp{ctx.tick(), static_cast<std::uint8_t>(phase::cameras), st.info.id,
                      st.mail_seq++};
     self->send(it->second.handle, net_send_atom_v, stamp, st.camera_id, std::move(batch));
-    ctx.sent_mail_to(it->second.participant);
+    ctx.sent_mail_to(it->second.participant, ctx.tick() + st.link_lookahead);
   }
   for (const auto& change : st.network->take_changes())
     ctx.emit(change.up ? "neighbour_up" : "neighbour_lost",
@@ -65,10 +64,13 @@ caf::behavior camera_node(caf::stateful_actor<camera_node_state>* self,
   st.ptz = camera.type == config::camera_type::ptz;
   st.network = std::make_unique<protocol::node_network>(camera.id, neighbours_of(links), scenario);
   st.links = std::move(links);
+  st.link_lookahead =
+      protocol::link_model::min_delay_ticks(scenario.network, scenario.run.tick.count());
   return {
       [self](net_deliver_atom, const mail_stamp& stamp, int from,
-             std::vector<protocol::net_message>& batch) {
-        self->state.arrivals.put(stamp, arrival{from, std::move(batch)});
+             std::vector<net_delivery>& batch) { self->state.arrivals.put(stamp, from, batch); },
+      [self](net_retract_atom, std::uint64_t link, std::int64_t from_due) {
+        self->state.arrivals.retract(link, from_due);
       },
       [self](tick_atom, std::int64_t tick, std::uint8_t p) {
         auto& st = self->state;
@@ -79,7 +81,7 @@ caf::behavior camera_node(caf::stateful_actor<camera_node_state>* self,
                                           st.ptz ? "ptz" : "static"));
         }
         for (auto& [stamp, a] : st.arrivals.take_due(tick, p))
-          for (const auto& m : a.messages) st.network->receive(tick, a.from, m);
+          st.network->receive(tick, a.from, a.message);
         for (const auto& m : st.network->take_delivered()) {
           // A liveness probe any node may send; the controller's messages come with it.
           if (m.kind == "ping") st.network->reply(m, "pong", {});

@@ -92,31 +92,26 @@ class clock_actor : public caf::event_based_actor {
       auto& e = participants_[id];
       e.handle = std::move(handle);
       e.info = std::move(info);
-      if (e.info.mode == wake_mode::every_tick)
-        every_tick_[index(e.info.tick_phase)].insert(id);
-      else
+      if (e.info.mode == wake_mode::every_tick) {
+        auto& ids = every_tick_[index(e.info.tick_phase)];
+        ids.insert(std::lower_bound(ids.begin(), ids.end(), id), id);
+      } else {
         book(id, tick_);
+      }
     }
     pending_joins_.clear();
   }
 
+  // A calendar slot may list an id that was re-booked earlier or dropped since: collect_due
+  // skips any id whose entry is gone or no longer booked for that slot. That keeps booking a
+  // push_back, where erasing from the later slot would cost a search per re-booking.
   void book(std::uint64_t id, std::int64_t at) {
     auto it = participants_.find(id);
     if (it == participants_.end() || it->second.info.mode != wake_mode::on_demand) return;
     auto& e = it->second;
     if (e.booked >= 0 && e.booked <= at) return;
-    auto& cal = calendar_[index(e.info.tick_phase)];
-    if (e.booked >= 0) unbook(cal, e.booked, id);
-    cal[at].insert(id);
+    calendar_[index(e.info.tick_phase)][at].push_back(id);
     e.booked = at;
-  }
-
-  static void unbook(std::map<std::int64_t, std::set<std::uint64_t>>& cal, std::int64_t at,
-                     std::uint64_t id) {
-    auto slot = cal.find(at);
-    if (slot == cal.end()) return;
-    slot->second.erase(id);
-    if (slot->second.empty()) cal.erase(slot);
   }
 
   void begin_tick() {
@@ -141,20 +136,30 @@ class clock_actor : public caf::event_based_actor {
   // Fills due_ with this phase's participants, in id order, and marks them awaited.
   void collect_due() {
     due_.clear();
+    due_ids_.clear();
     auto& cal = calendar_[phase_];
     while (!cal.empty() && cal.begin()->first <= tick_) {
+      auto slot = cal.begin()->first;
       for (auto id : cal.begin()->second) {
-        auto& e = participants_[id];
-        e.booked = -1;
-        due_.push_back(&e);
+        auto it = participants_.find(id);
+        if (it == participants_.end() || it->second.booked != slot) continue;
+        it->second.booked = -1;
+        due_ids_.push_back(id);
       }
       cal.erase(cal.begin());
     }
-    bool from_calendar = !due_.empty();
-    for (auto id : every_tick_[phase_]) due_.push_back(&participants_[id]);
-    if (from_calendar)
-      std::sort(due_.begin(), due_.end(),
-                [](const entry* a, const entry* b) { return a->info.id < b->info.id; });
+    if (!due_ids_.empty()) {
+      const auto& every = every_tick_[phase_];
+      auto calendar_end = due_ids_.size();
+      due_ids_.insert(due_ids_.end(), every.begin(), every.end());
+      std::sort(due_ids_.begin(), due_ids_.begin() + static_cast<std::ptrdiff_t>(calendar_end));
+      std::inplace_merge(due_ids_.begin(),
+                         due_ids_.begin() + static_cast<std::ptrdiff_t>(calendar_end),
+                         due_ids_.end());
+      for (auto id : due_ids_) due_.push_back(&participants_.find(id)->second);
+    } else {
+      for (auto id : every_tick_[phase_]) due_.push_back(&participants_.find(id)->second);
+    }
     for (auto* e : due_) e->awaited = true;
     awaiting_ = due_.size();
   }
@@ -168,12 +173,15 @@ class clock_actor : public caf::event_based_actor {
     }
     for (auto& ev : ack.events) batch_.push_back(std::move(ev));
     if (ack.next_wakeup != no_wakeup) book(ack.participant, std::max(ack.next_wakeup, tick_ + 1));
-    for (auto id : ack.woken) {
+    for (std::size_t i = 0; i < ack.woken.size(); ++i) {
+      auto id = ack.woken[i];
       auto target = participants_.find(id);
       if (target == participants_.end()) continue;
       // Mail for a later phase is read this tick; for this or an earlier phase, next tick.
       auto later = index(target->second.info.tick_phase) > phase_;
-      book(id, later ? tick_ : tick_ + 1);
+      auto at = later ? tick_ : tick_ + 1;
+      if (i < ack.woken_not_before.size()) at = std::max(at, ack.woken_not_before[i]);
+      book(id, at);
     }
     it->second.awaited = false;
     if (--awaiting_ == 0) {
@@ -220,8 +228,8 @@ class clock_actor : public caf::event_based_actor {
     if (it == participants_.end()) return;
     auto& e = it->second;
     if (expected) retired_.insert(id);
-    every_tick_[index(e.info.tick_phase)].erase(id);
-    if (e.booked >= 0) unbook(calendar_[index(e.info.tick_phase)], e.booked, id);
+    auto& every = every_tick_[index(e.info.tick_phase)];
+    every.erase(std::remove(every.begin(), every.end(), id), every.end());
     bool was_awaited = e.awaited;
     due_.erase(std::remove(due_.begin(), due_.end(), &e), due_.end());
     participants_.erase(it);
@@ -290,7 +298,7 @@ class clock_actor : public caf::event_based_actor {
     for (auto& [id, e] : participants_) {
       if (!e.info.reports_at_end) continue;
       ++reports_pending_;
-      request(e.handle, caf::infinite, report_atom_v)
+      request(e.handle, caf::infinite, report_atom_v, tick_)
           .then(
               [this](link_report& r) {
                 result_.links[r.link] = std::move(r.counts);
@@ -334,7 +342,8 @@ class clock_actor : public caf::event_based_actor {
   bool started_ = false;
   bool finished_ = false;
 
-  std::map<std::uint64_t, entry> participants_;
+  // Looked up on every ack and every wake-up: hashed, and node-based so due_ may point in.
+  std::unordered_map<std::uint64_t, entry> participants_;
   std::unordered_map<caf::actor_addr, std::uint64_t> by_address_;
   std::vector<std::pair<caf::actor, participant_info>> pending_joins_;
   std::set<std::uint64_t> retired_;
@@ -342,12 +351,13 @@ class clock_actor : public caf::event_based_actor {
   run_result result_;
   std::size_t reports_pending_ = 0;
   std::vector<std::string> unexpected_down_;
-  std::array<std::set<std::uint64_t>, phase_count> every_tick_;
-  std::array<std::map<std::int64_t, std::set<std::uint64_t>>, phase_count> calendar_;
+  std::array<std::vector<std::uint64_t>, phase_count> every_tick_;  // sorted ids
+  std::array<std::map<std::int64_t, std::vector<std::uint64_t>>, phase_count> calendar_;
 
   std::int64_t tick_ = 0;
   std::size_t phase_ = 0;
   std::vector<entry*> due_;
+  std::vector<std::uint64_t> due_ids_;
   std::size_t awaiting_ = 0;
   std::vector<sim_event> batch_;
   std::size_t unwritten_batches_ = 0;

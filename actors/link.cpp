@@ -1,10 +1,12 @@
 #include "actors/link.hpp"
 
+#include <deque>
 #include <map>
 #include <optional>
 #include <tuple>
 #include <vector>
 
+#include "actors/net_delivery.hpp"
 #include "actors/ordered_inbox.hpp"
 #include "actors/participant_ids.hpp"
 #include "actors/tick_context.hpp"
@@ -36,14 +38,24 @@ struct link_input {
   std::vector<protocol::net_message> messages;
 };
 
+// A message handed to a node ahead of its due tick: still ours to account for, until it is
+// due, should a cut take it back or the node go down first.
+struct handed_over {
+  std::int64_t due = 0;
+  std::size_t to = 0;
+  protocol::message_counts* counts = nullptr;
+};
+
 struct link_state {
   participant_info info;
   std::array<endpoint, 2> ends;
   std::unique_ptr<protocol::link_model> model;
   bool reorder = false;
+  std::int64_t lookahead = 1;
   ordered_inbox<link_input> inbox;
   // Pending deliveries by due tick, each tick's in order of acceptance: a deterministic order.
   std::map<std::int64_t, std::vector<in_transit>> pending;
+  std::deque<handed_over> handed;              // in order of due tick
   std::array<std::int64_t, 2> last_due{0, 0};  // per direction, for FIFO delivery
   bool cut = false;
   double burst_loss = 0.0;
@@ -64,11 +76,25 @@ struct link_state {
   }
 };
 
+using link_actor = caf::stateful_actor<link_state>;
+
 std::size_t end_of(const link_state& st, int node) {
   return st.ends[0].node == node ? 0 : 1;
 }
 
-void apply(link_state& st, const link_command& cmd) {
+// Hand-overs to end `to` (both ends when `to` is 2) due at `from_due` or later never reach
+// their node: recount them from delivered to `lost` or `dropped`.
+void recount_handed(link_state& st, std::size_t to, std::int64_t from_due, bool as_lost) {
+  std::erase_if(st.handed, [&](const handed_over& h) {
+    if (h.due < from_due || (to != 2 && h.to != to)) return false;
+    --h.counts->delivered;
+    ++(as_lost ? h.counts->lost : h.counts->dropped);
+    return true;
+  });
+}
+
+void apply(link_actor* self, std::int64_t tick, const link_command& cmd) {
+  auto& st = self->state;
   switch (cmd.op) {
     case link_op::attach: {
       auto& e = st.ends[end_of(st, cmd.node)];
@@ -77,13 +103,24 @@ void apply(link_state& st, const link_command& cmd) {
       break;
     }
     case link_op::node_down: {
-      auto& e = st.ends[end_of(st, cmd.node)];
+      // The node's actor died with what it held: hand-overs due from now on were dropped.
+      auto end = end_of(st, cmd.node);
+      auto& e = st.ends[end];
+      if (e.handle) self->send(e.handle, net_retract_atom_v, st.info.id, tick);
+      recount_handed(st, end, tick, /*as_lost=*/false);
       e.handle = caf::actor{};
       e.up = false;
       break;
     }
     case link_op::cut:
+      // The cut catches everything on the wire: due from now on, handed over or not.
       st.cut = true;
+      for (const auto& e : st.ends)
+        if (e.up) self->send(e.handle, net_retract_atom_v, st.info.id, tick);
+      recount_handed(st, 2, tick, /*as_lost=*/true);
+      for (auto& [due, list] : st.pending)
+        for (auto& t : list) ++st.counter(t.message.kind).lost;
+      st.pending.clear();
       break;
     case link_op::heal:
       st.cut = false;
@@ -121,48 +158,61 @@ void accept(link_state& st, std::int64_t sent_tick, in_transit t) {
   st.pending[due].push_back(std::move(t));
 }
 
-// Hands over everything due by now: one CAF message per receiving end per tick, whatever
-// the number of network messages in it.
-void deliver_due(caf::stateful_actor<link_state>* self, tick_context& ctx) {
+// Hands over everything due before tick + lookahead: nothing sent from now on can be due that
+// early, so the set is final. One CAF message per receiving end, whatever the number of
+// network messages and due ticks in it; the node reads each at its due tick. A message for a
+// node that is down stays until its due tick, in case the node comes back first; then it is
+// dropped.
+void hand_over(link_actor* self, tick_context& ctx) {
   auto& st = self->state;
-  std::array<std::vector<protocol::net_message>, 2> out;
-  while (!st.pending.empty() && st.pending.begin()->first <= ctx.tick()) {
-    auto due = std::move(st.pending.begin()->second);
-    st.pending.erase(st.pending.begin());
-    for (auto& t : due) {
-      auto& c = st.counter(t.message.kind);
-      if (st.cut) {
-        ++c.lost;  // the cut caught it on the wire
-        continue;
-      }
+  auto tick = ctx.tick();
+  auto horizon = tick + st.lookahead;
+  std::array<std::vector<net_delivery>, 2> out;
+  for (auto it = st.pending.begin(); it != st.pending.end() && it->first < horizon;) {
+    auto due = it->first;
+    auto& list = it->second;
+    std::vector<in_transit> kept;
+    for (auto& t : list) {
       auto to = 1 - end_of(st, t.from);
+      auto& c = st.counter(t.message.kind);
       if (!st.ends[to].up) {
-        ++c.dropped;
+        if (due <= tick)
+          ++c.dropped;
+        else
+          kept.push_back(std::move(t));
         continue;
       }
       ++c.delivered;
+      if (due > tick) st.handed.push_back(handed_over{due, to, &c});
       ++t.message.hops;
-      out[to].push_back(std::move(t.message));
+      out[to].push_back(net_delivery{due, std::move(t.message)});
+    }
+    if (kept.empty()) {
+      it = st.pending.erase(it);
+    } else {
+      list = std::move(kept);
+      ++it;
     }
   }
   for (std::size_t to = 0; to < 2; ++to) {
     if (out[to].empty()) continue;
     const auto& end = st.ends[to];
-    mail_stamp stamp{ctx.tick(), static_cast<std::uint8_t>(phase::network), st.info.id,
-                     st.delivered_seq++};
+    auto first_due = out[to].front().due;
+    mail_stamp stamp{tick, static_cast<std::uint8_t>(phase::network), st.info.id, st.delivered_seq};
+    st.delivered_seq += out[to].size();
     self->send(end.handle, net_deliver_atom_v, stamp, st.ends[1 - to].node, std::move(out[to]));
-    ctx.sent_mail_to(participant_ids::camera(end.node));
+    ctx.sent_mail_to(participant_ids::camera(end.node), first_due);
   }
 }
 
-caf::behavior link(caf::stateful_actor<link_state>* self, participant_info info,
-                   config::network_settings network, double tick_seconds, std::uint64_t seed, int a,
-                   int b) {
+caf::behavior link(link_actor* self, participant_info info, config::network_settings network,
+                   double tick_seconds, std::uint64_t seed, int a, int b) {
   auto& st = self->state;
   st.info = std::move(info);
   st.ends[0].node = a;
   st.ends[1].node = b;
   st.reorder = network.reorder;
+  st.lookahead = protocol::link_model::min_delay_ticks(network, tick_seconds);
   st.model = std::make_unique<protocol::link_model>(network, tick_seconds,
                                                     config::derive_seed(seed, st.info.id));
   return {
@@ -178,22 +228,40 @@ caf::behavior link(caf::stateful_actor<link_state>* self, participant_info info,
         tick_context ctx(st.info.id, st.info.name, tick, st.info.tick_phase);
         for (auto& [stamp, input] : st.inbox.take_due(tick, p)) {
           if (input.command) {
-            apply(st, *input.command);
+            apply(self, tick, *input.command);
             continue;
           }
           for (auto& m : input.messages)
             accept(st, stamp.tick, in_transit{input.from, std::move(m)});
         }
-        deliver_due(self, ctx);
+        while (!st.handed.empty() && st.handed.front().due <= tick) st.handed.pop_front();
+        hand_over(self, ctx);
+        // Nothing due before the horizon is left but for nodes that are down, so the next
+        // hand-over is a lookahead later at the soonest; a node's own send wakes us as well.
         if (!st.pending.empty()) ctx.wake_at(st.pending.begin()->first);
         if (st.burst_until > tick) ctx.wake_at(st.burst_until);
         self->send(caf::actor_cast<caf::actor>(self->current_sender()), std::move(ctx).finish());
       },
-      [self](report_atom) {
+      [self](report_atom, std::int64_t end_tick) {
         auto& st = self->state;
         auto counts = st.counts;
+        // Sent in the last ticks, before the lookahead had us read them: on the wire still.
+        for (const auto& [stamp, input] : st.inbox.take_due(end_tick + 1, 0))
+          for (const auto& m : input.messages) {
+            ++counts[m.kind].sent;
+            ++counts[m.kind].in_flight;
+          }
         for (const auto& [due, list] : st.pending)
           for (const auto& t : list) ++counts[t.message.kind].in_flight;
+        // Handed over but due after the run: the node never read them.
+        for (const auto& h : st.handed) {
+          if (h.due < end_tick) continue;
+          for (auto& [kind, c] : st.counts) {
+            if (&c != h.counts) continue;
+            --counts[kind].delivered;
+            ++counts[kind].in_flight;
+          }
+        }
         return link_report{st.info.name, std::move(counts)};
       },
   };

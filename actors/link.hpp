@@ -23,9 +23,12 @@ participant_info link_participant(std::size_t index, int a, int b);
 ///   the scenario sets `reorder`; duplicated with `duplicate_probability`.
 /// - `(link_cmd_atom, mail_stamp, link_command)`: attach a node's actor, node down, cut, heal,
 ///   loss burst.
-/// It delivers what is due, hops + 1, as one `(net_deliver_atom, mail_stamp, int from_node,
-/// std::vector<net_message>)` per receiving end per tick, or drops it when that node is down,
-/// and answers `(report_atom)` with a `link_report`.
+/// Woken at tick t, it hands over everything due before t + lookahead (the minimum delay in
+/// ticks: nothing sent from t on can be due sooner) as one `(net_deliver_atom, mail_stamp,
+/// int from_node, std::vector<net_delivery>)` per receiving end, hops + 1, each message to be
+/// read at its due tick; a cut sends `(net_retract_atom, std::uint64_t link_id, std::int64_t
+/// from_due)` for what it caught. It answers `(report_atom, std::int64_t end_tick)` with a
+/// `link_report`. docs/network.md, "Lookahead", explains why this changes no outcome.
 caf::actor spawn_link(caf::actor_system& system, const config::scenario& scenario,
                       std::size_t index, int a, int b);
 

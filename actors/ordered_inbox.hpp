@@ -49,6 +49,14 @@ class ordered_inbox {
     return due;
   }
 
+  /// Drops every held message whose stamp satisfies `pred`.
+  template <class Predicate>
+  void discard_if(Predicate pred) {
+    mail_.erase(
+        std::remove_if(mail_.begin(), mail_.end(), [&](const auto& m) { return pred(m.first); }),
+        mail_.end());
+  }
+
   /// Number of messages held.
   std::size_t size() const noexcept { return mail_.size(); }
 

@@ -20,7 +20,8 @@ struct participant_info {
   std::string name;
   phase tick_phase = phase::cameras;
   wake_mode mode = wake_mode::every_tick;
-  /// Answers `(report_atom)` with a `link_report` when the run ends (links do).
+  /// Answers `(report_atom, std::int64_t end_tick)` with a `link_report` when the run ends
+  /// (links do).
   bool reports_at_end = false;
 };
 

@@ -12,7 +12,9 @@ inline constexpr std::int64_t no_wakeup = -1;
 
 /// A participant's answer to a tick: done with tick `tick`, wants to be ticked again at
 /// `next_wakeup` (on-demand participants only), sent mail to the participants in `woken`
-/// (so the clock ticks them to read it), and produced `events`.
+/// (so the clock ticks them to read it, not before the matching tick of `woken_not_before`
+/// when that is not `no_wakeup`: mail the receiver need not read at once), and produced
+/// `events`.
 ///
 /// Contract: a participant sends all its mail *before* its ack. Local CAF sends enqueue
 /// synchronously, so once the clock holds every ack of a phase, every message of that phase
@@ -22,6 +24,7 @@ struct tick_ack {
   std::int64_t tick = 0;
   std::int64_t next_wakeup = no_wakeup;
   std::vector<std::uint64_t> woken;
+  std::vector<std::int64_t> woken_not_before;  // parallel to woken
   std::vector<sim_event> events;
 
   friend bool operator==(const tick_ack&, const tick_ack&) = default;
@@ -29,7 +32,7 @@ struct tick_ack {
 
 template <class Inspector>
 typename Inspector::result_type inspect(Inspector& f, tick_ack& x) {
-  return f(x.participant, x.tick, x.next_wakeup, x.woken, x.events);
+  return f(x.participant, x.tick, x.next_wakeup, x.woken, x.woken_not_before, x.events);
 }
 
 }  // namespace argus::actors

@@ -36,8 +36,13 @@ class tick_context {
     ack_.events.push_back(std::move(ev));
   }
 
-  /// Records that mail went to participant `id`, so the clock ticks it to read it.
-  void sent_mail_to(std::uint64_t id) { ack_.woken.push_back(id); }
+  /// Records that mail went to participant `id`, so the clock ticks it to read it: at once
+  /// (its next turn), or not before tick `not_before` when the receiver has lookahead — a
+  /// link need not read what was sent on it until the earliest tick it could be due.
+  void sent_mail_to(std::uint64_t id, std::int64_t not_before = no_wakeup) {
+    ack_.woken.push_back(id);
+    ack_.woken_not_before.push_back(not_before);
+  }
 
   /// Asks to be ticked again at `tick` (on-demand participants; the earliest request wins).
   void wake_at(std::int64_t tick) {

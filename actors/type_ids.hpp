@@ -8,6 +8,7 @@
 
 #include "actors/link_command.hpp"
 #include "actors/link_report.hpp"
+#include "actors/net_delivery.hpp"
 #include "actors/ordered_inbox.hpp"
 #include "actors/participant_info.hpp"
 #include "actors/render_pool.hpp"
@@ -30,6 +31,8 @@ CAF_ADD_TYPE_ID(argus, (argus::actors::link_command))
 CAF_ADD_TYPE_ID(argus, (argus::actors::link_report))
 CAF_ADD_TYPE_ID(argus, (argus::protocol::net_message))
 CAF_ADD_TYPE_ID(argus, (std::vector<argus::protocol::net_message>))
+CAF_ADD_TYPE_ID(argus, (argus::actors::net_delivery))
+CAF_ADD_TYPE_ID(argus, (std::vector<argus::actors::net_delivery>))
 CAF_ADD_TYPE_ID(argus, (argus::actors::world_update))
 CAF_ADD_TYPE_ID(argus, (argus::actors::partition_report))
 CAF_ADD_TYPE_ID(argus, (argus::actors::render_request))
@@ -49,6 +52,7 @@ CAF_ADD_ATOM(argus, argus::actors, report_atom, "report")
 CAF_ADD_ATOM(argus, argus::actors, net_send_atom, "net_send")
 CAF_ADD_ATOM(argus, argus::actors, net_deliver_atom, "net_dlvr")
 CAF_ADD_ATOM(argus, argus::actors, link_cmd_atom, "link_cmd")
+CAF_ADD_ATOM(argus, argus::actors, net_retract_atom, "net_rtrct")
 CAF_ADD_ATOM(argus, argus::actors, world_report_atom, "w_report")
 CAF_ADD_ATOM(argus, argus::actors, world_update_atom, "w_update")
 CAF_ADD_ATOM(argus, argus::actors, world_attach_atom, "w_attach")

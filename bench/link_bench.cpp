@@ -19,6 +19,7 @@
 #include "actors/system_config.hpp"
 #include "actors/tick_context.hpp"
 #include "actors/type_ids.hpp"
+#include "protocol/link_model.hpp"
 #include "protocol/topology.hpp"
 
 namespace {
@@ -31,13 +32,14 @@ struct node_links {
 };
 
 // Sends `burst` messages per link per tick; counts nothing itself (the links account).
-caf::behavior blaster(caf::event_based_actor* self, int node, int burst,
+caf::behavior blaster(caf::event_based_actor* self, int node, int burst, std::int64_t lookahead,
                       std::shared_ptr<node_links> mine) {
   auto seq = std::make_shared<std::uint32_t>(0);
   return {
-      [](net_deliver_atom, const mail_stamp&, int, const std::vector<protocol::net_message>&) {
+      [](net_deliver_atom, const mail_stamp&, int, const std::vector<net_delivery>&) {
         // nop: arrivals are the links' business here
       },
+      [](net_retract_atom, std::uint64_t, std::int64_t) {},
       [=](tick_atom, std::int64_t tick, std::uint8_t) {
         tick_context ctx(participant_ids::camera(node), "n", tick, phase::cameras);
         for (const auto& [link, id] : mine->links) {
@@ -51,7 +53,7 @@ caf::behavior blaster(caf::event_based_actor* self, int node, int burst,
           self->send(link, net_send_atom_v,
                      mail_stamp{tick, 3, participant_ids::camera(node), first}, node,
                      std::move(batch));
-          ctx.sent_mail_to(id);
+          ctx.sent_mail_to(id, tick + lookahead);
         }
         self->send(caf::actor_cast<caf::actor>(self->current_sender()), std::move(ctx).finish());
       },
@@ -92,11 +94,12 @@ outcome run_links(const config::scenario& s, const protocol::topology& topo, uns
   clock_settings cs;
   cs.end_tick = ticks;
   auto clock = spawn_clock(sys, cs, recorder, caf::actor{});
+  auto lookahead = protocol::link_model::min_delay_ticks(s.network, s.run.tick.count());
   std::map<int, std::shared_ptr<node_links>> per_node;
   std::map<int, caf::actor> nodes;
   for (int n : topo.nodes()) per_node[n] = std::make_shared<node_links>();
   for (int n : topo.nodes()) {
-    nodes[n] = sys.spawn(blaster, n, burst, per_node[n]);
+    nodes[n] = sys.spawn(blaster, n, burst, lookahead, per_node[n]);
     caf::anon_send(
         clock, join_atom_v, nodes[n],
         participant_info{participant_ids::camera(n), "n", phase::cameras, wake_mode::every_tick});

@@ -14,6 +14,13 @@ link_model::link_model(const config::network_settings& network, double tick_seco
       tick_s_(tick_seconds),
       rng_(seed) {}
 
+std::int64_t link_model::min_delay_ticks(const config::network_settings& network,
+                                         double tick_seconds) {
+  auto lowest =
+      static_cast<std::int64_t>(std::ceil(network.min_delay.count() / tick_seconds - 1e-9));
+  return std::max<std::int64_t>(1, lowest);
+}
+
 std::int64_t link_model::draw_delay_ticks() {
   double delay = min_delay_s_;
   if (max_delay_s_ > min_delay_s_)

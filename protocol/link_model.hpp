@@ -28,6 +28,10 @@ class link_model {
   /// Draws the fate of one message; `loss_probability` overrides the scenario's (loss bursts).
   link_fate draw(double loss_probability);
 
+  /// The fewest ticks any message spends on a link of this network: the links' lookahead
+  /// (what is sent at tick t is never due before t + min_delay_ticks).
+  static std::int64_t min_delay_ticks(const config::network_settings& network, double tick_seconds);
+
   /// Draws with the scenario's loss probability.
   link_fate draw() { return draw(loss_); }
 

@@ -2,10 +2,12 @@
 
 #include "actors/link.hpp"
 
+#include <functional>
 #include <map>
 
 #include "actors/clock.hpp"
 #include "actors/link_command.hpp"
+#include "actors/net_arrivals.hpp"
 #include "actors/participant_ids.hpp"
 #include "actors/system_config.hpp"
 #include "caf/test/dsl.hpp"
@@ -19,7 +21,7 @@ using namespace argus::actors::testing;
 namespace {
 
 struct delivery {
-  std::int64_t tick;       // when the link handed it over
+  std::int64_t tick;       // when the endpoint read it
   std::int64_t sent_tick;  // from the body
   std::uint64_t id;
 };
@@ -38,16 +40,23 @@ struct endpoint_plan {
   std::int64_t to_tick = 0;
 };
 
+// Reads what the link hands over as a camera node does (actors/net_arrivals.hpp): each
+// message in the endpoint's turn of its due tick, unless the link took it back first.
 caf::behavior endpoint(caf::event_based_actor* self, endpoint_plan plan, caf::actor link,
                        std::uint64_t link_id, std::shared_ptr<endpoint_log> log) {
   auto seq = std::make_shared<std::uint32_t>(0);
+  auto arrivals = std::make_shared<net_arrivals>();
   return {
-      [=](net_deliver_atom, const mail_stamp& stamp, int,
-          const std::vector<protocol::net_message>& batch) {
-        for (const auto& m : batch) log->got.push_back({stamp.tick, std::stoll(m.body), m.id});
+      [=](net_deliver_atom, const mail_stamp& stamp, int from, std::vector<net_delivery>& batch) {
+        arrivals->put(stamp, from, batch);
+      },
+      [=](net_retract_atom, std::uint64_t from_link, std::int64_t from_due) {
+        arrivals->retract(from_link, from_due);
       },
       [=](tick_atom, std::int64_t tick, std::uint8_t) {
         tick_context ctx(participant_ids::camera(plan.node), "endpoint", tick, phase::cameras);
+        for (const auto& [stamp, a] : arrivals->take_due(tick, 3))
+          log->got.push_back({stamp.tick, std::stoll(a.message.body), a.message.id});
         if (tick >= plan.from_tick && tick < plan.to_tick) {
           std::vector<protocol::net_message> batch;
           for (int i = 0; i < plan.per_tick; ++i) {
@@ -63,19 +72,23 @@ caf::behavior endpoint(caf::event_based_actor* self, endpoint_plan plan, caf::ac
                      mail_stamp{tick, 3, participant_ids::camera(plan.node),
                                 static_cast<std::uint64_t>(tick)},
                      plan.node, std::move(batch));
-          ctx.sent_mail_to(link_id);
+          ctx.sent_mail_to(link_id, tick + 3);  // 200 ms at 15 Hz: the links' lookahead
         }
         self->send(caf::actor_cast<caf::actor>(self->current_sender()), std::move(ctx).finish());
       },
   };
 }
 
+// What the fault injector does to actors besides telling the link (kill, retire, join).
+using side_effects = std::map<std::int64_t, std::function<void(caf::event_based_actor*)>>;
+
 // Sends scheduled commands to the link in the faults phase, as the fault injector does.
 caf::behavior commander(caf::event_based_actor* self, caf::actor link, std::uint64_t link_id,
-                        std::map<std::int64_t, link_command> schedule) {
+                        std::map<std::int64_t, link_command> schedule, side_effects effects) {
   return {
       [=](tick_atom, std::int64_t tick, std::uint8_t) {
         tick_context ctx(participant_ids::fault_injector, "commander", tick, phase::faults);
+        if (auto effect = effects.find(tick); effect != effects.end()) effect->second(self);
         auto it = schedule.find(tick);
         if (it != schedule.end()) {
           self->send(link, link_cmd_atom_v, mail_stamp{tick, 0, participant_ids::fault_injector, 0},
@@ -100,8 +113,10 @@ struct fixture : test_coordinator_fixture<test_config> {
   caf::actor link;
   std::uint64_t link_id = participant_ids::link(0);
 
+  caf::actor e2;
+
   void build(config::network_settings net, std::int64_t ticks, endpoint_plan plan1,
-             std::map<std::int64_t, link_command> schedule = {}) {
+             std::map<std::int64_t, link_command> schedule = {}, side_effects effects = {}) {
     clock_settings cs;
     cs.end_tick = ticks;
     clock = spawn_clock(sys, cs, recorder, caf::actor{});
@@ -110,7 +125,7 @@ struct fixture : test_coordinator_fixture<test_config> {
     s.network = net;
     link = spawn_link(sys, s, 0, 1, 2);
     auto e1 = sys.spawn(endpoint, plan1, link, link_id, at1);
-    auto e2 = sys.spawn(endpoint, endpoint_plan{2, 1, 0, 0, 0}, link, link_id, at2);
+    e2 = sys.spawn(endpoint, endpoint_plan{2, 1, 0, 0, 0}, link, link_id, at2);
     attach(1, e1);
     attach(2, e2);
     self->send(clock, join_atom_v, link, link_participant(0, 1, 2));
@@ -120,7 +135,7 @@ struct fixture : test_coordinator_fixture<test_config> {
     self->send(
         clock, join_atom_v, e2,
         participant_info{participant_ids::camera(2), "e2", phase::cameras, wake_mode::every_tick});
-    auto cmd = sys.spawn(commander, link, link_id, std::move(schedule));
+    auto cmd = sys.spawn(commander, link, link_id, std::move(schedule), std::move(effects));
     self->send(clock, join_atom_v, cmd,
                participant_info{participant_ids::fault_injector, "commander", phase::faults,
                                 wake_mode::every_tick});
@@ -223,15 +238,25 @@ CAF_TEST(messages to a crashed node are dropped and counted and a recovered node
   link_command down;
   down.op = link_op::node_down;
   down.node = 2;
-  build(lossless(), 80, {1, 2, 1, 0, 60}, {{20, down}});
-  // The node comes back at tick 40 as a fresh actor.
+  // The node crashes at tick 20 (killed, retired from the clock, links told) and comes back
+  // at tick 40 as a fresh actor that joins the clock and is attached to the link.
   auto fresh_log = std::make_shared<endpoint_log>();
-  auto fresh = sys.spawn(endpoint, endpoint_plan{2, 1, 0, 0, 0}, link, link_id, fresh_log);
+  auto fresh = sys.spawn(endpoint, endpoint_plan{2, 1, 0, 0, 0}, caf::actor{}, link_id, fresh_log);
   link_command back;
   back.op = link_op::attach;
   back.node = 2;
   back.handle = fresh;
-  self->send(link, link_cmd_atom_v, mail_stamp{40, 0, participant_ids::fault_injector, 1}, back);
+  side_effects effects;
+  effects[20] = [this](caf::event_based_actor* cmd) {
+    cmd->send(clock, retire_atom_v, participant_ids::camera(2));
+    cmd->send_exit(e2, caf::exit_reason::kill);
+  };
+  effects[40] = [this, fresh](caf::event_based_actor* cmd) {
+    cmd->send(clock, join_atom_v, fresh,
+              participant_info{participant_ids::camera(2), "fresh", phase::cameras,
+                               wake_mode::every_tick});
+  };
+  build(lossless(), 80, {1, 2, 1, 0, 60}, {{20, down}, {40, back}}, std::move(effects));
   auto c = run_and_count();
   for (const auto& d : at2->got) CAF_CHECK_LESS(d.tick, 20);
   CAF_CHECK(!fresh_log->got.empty());
