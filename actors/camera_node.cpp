@@ -13,6 +13,15 @@
 namespace argus::actors {
 namespace {
 
+// A message the node's controller (or, until the controller exists, the operator or a test)
+// asks the network side to originate.
+struct origination {
+  int destination = protocol::broadcast;
+  std::string kind;
+  std::string body;
+  bool expects_reply = false;
+};
+
 struct camera_node_state {
   participant_info info;
   int camera_id = 0;
@@ -21,6 +30,7 @@ struct camera_node_state {
   link_directory links;
   std::unique_ptr<protocol::node_network> network;
   net_arrivals arrivals;
+  ordered_inbox<origination> to_originate;
   // What this node sends on a link is never due before this many ticks: the link need not
   // read it sooner (docs/network.md, "Lookahead").
   std::int64_t link_lookahead = 1;
@@ -72,6 +82,11 @@ caf::behavior camera_node(caf::stateful_actor<camera_node_state>* self,
       [self](net_retract_atom, std::uint64_t link, std::int64_t from_due) {
         self->state.arrivals.retract(link, from_due);
       },
+      [self](net_originate_atom, const mail_stamp& stamp, int destination, std::string& kind,
+             std::string& body, bool expects_reply) {
+        self->state.to_originate.put(
+            stamp, origination{destination, std::move(kind), std::move(body), expects_reply});
+      },
       [self](tick_atom, std::int64_t tick, std::uint8_t p) {
         auto& st = self->state;
         tick_context ctx(st.info.id, st.info.name, tick, st.info.tick_phase);
@@ -88,6 +103,13 @@ caf::behavior camera_node(caf::stateful_actor<camera_node_state>* self,
           ctx.emit("net_received",
                    fmt::format(R"("camera":{},"origin":{},"message":"{}","hops":{})", st.camera_id,
                                m.origin, m.kind, m.hops));
+        }
+        for (auto& [stamp, o] : st.to_originate.take_due(tick, p)) {
+          auto id = o.expects_reply
+                        ? st.network->request(tick, o.destination, o.kind, std::move(o.body))
+                        : st.network->send(o.destination, o.kind, std::move(o.body));
+          ctx.emit("net_sent", fmt::format(R"("camera":{},"destination":{},"message":"{}","id":{})",
+                                           st.camera_id, o.destination, o.kind, id));
         }
         st.network->tick(tick);
         flush_network(self, ctx);

@@ -29,10 +29,14 @@ participant_info camera_participant(const config::camera_settings& camera);
 ///
 /// Today the node announces itself (`node_up`) on its first tick and runs its network side
 /// (`protocol::node_network`): hello beacons, neighbour discovery (`neighbour_up`,
-/// `neighbour_lost` events) and multi-hop forwarding. Mail: `(net_deliver_atom, mail_stamp,
-/// int from_node, std::vector<net_message>)` from its links; it sends one `net_send_atom`
-/// batch per link per tick. Sensing (vision/), the controller FSM of
-/// Fig. 10 and the grouping protocol are not in it yet.
+/// `neighbour_lost` events), multi-hop forwarding, answers to `ping`, request time-outs
+/// (`peer_failed`). Mail: `(net_deliver_atom, mail_stamp, int from_node,
+/// std::vector<net_delivery>)` and `(net_retract_atom, ...)` from its links (docs/network.md);
+/// `(net_originate_atom, mail_stamp, int destination, std::string kind, std::string body, bool
+/// expects_reply)` asks it to send a message (`protocol::broadcast` for all within the hop
+/// limit), read in its turn in canonical order and logged as `net_sent`. It sends one
+/// `net_send_atom` batch per link per tick. Sensing (vision/), the controller FSM of Fig. 10
+/// and the grouping protocol are not in it yet.
 caf::actor spawn_camera_node(caf::actor_system& system, const config::scenario& scenario,
                              const config::camera_settings& camera, link_directory links);
 

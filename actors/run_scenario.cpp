@@ -5,10 +5,9 @@
 #include <stdexcept>
 #include <thread>
 
-#include "actors/camera_node.hpp"
 #include "actors/clock.hpp"
 #include "actors/fault_injector.hpp"
-#include "actors/link.hpp"
+#include "actors/network_assembly.hpp"
 #include "actors/participant_ids.hpp"
 #include "actors/progress_printer.hpp"
 #include "actors/recorder.hpp"
@@ -18,7 +17,6 @@
 #include "actors/type_ids.hpp"
 #include "actors/video_recorder.hpp"
 #include "actors/world_coordinator.hpp"
-#include "protocol/topology.hpp"
 #include "world/layout_loader.hpp"
 
 namespace argus::actors {
@@ -96,33 +94,7 @@ run_outcome run_scenario(const config::scenario& scenario, const run_options& op
 
   // Joins and link attachments go out from this thread, in this order, before `start`:
   // enqueued in program order, they all reach their receivers before the first tick.
-  protocol::topology topo(scenario);
-  network_directory net;
-  std::vector<std::pair<caf::actor, participant_info>> links;
-  for (std::size_t i = 0; i < topo.links().size(); ++i) {
-    auto [a, b] = topo.links()[i];
-    auto info = link_participant(i, a, b);
-    auto handle = spawn_link(system, scenario, i, a, b);
-    net.links[a][b] = attached_link{info.id, handle};
-    net.links[b][a] = attached_link{info.id, handle};
-    links.emplace_back(handle, info);
-  }
-  for (const auto& cam : scenario.cameras) {
-    auto node = spawn_camera_node(system, scenario, cam, net.links[cam.id]);
-    net.cameras.emplace(cam.id, node);
-    caf::anon_send(clock, join_atom_v, node, camera_participant(cam));
-  }
-  std::uint64_t seq = 0;
-  for (const auto& [camera, neighbours] : net.links)
-    for (const auto& [neighbour, link] : neighbours) {
-      link_command attach;
-      attach.op = link_op::attach;
-      attach.node = camera;
-      attach.handle = net.cameras.at(camera);
-      // Stamped before tick 0, so each link reads it on its first tick.
-      caf::anon_send(link.handle, link_cmd_atom_v, mail_stamp{-1, 0, 0, seq++}, attach);
-    }
-  for (const auto& [handle, info] : links) caf::anon_send(clock, join_atom_v, handle, info);
+  auto net = spawn_network(system, scenario, clock);
   auto script = spawn_scenario_script(system, scenario, clock);
   caf::anon_send(clock, join_atom_v, script, script_participant());
   auto faults = spawn_fault_injector(system, scenario, clock, std::move(net));

@@ -2,7 +2,7 @@
 
 #include <cstdint>
 #include <deque>
-#include <unordered_set>
+#include <unordered_map>
 #include <vector>
 
 #include "protocol/net_message.hpp"
@@ -17,11 +17,15 @@ struct routing_decision {
 
 /// Multi-hop delivery by flooding with duplicate suppression (docs/network.md).
 ///
-/// A node forwards each message id at most once, to its live neighbours except the one it
-/// came from, while the message has crossed fewer than `max_hops` links; so one message costs
-/// at most one transmission per link, never a storm. A unicast whose destination is a live
-/// neighbour goes over that one link only. A message that cannot reach its destination within
-/// the hop limit is not delivered, as Table 2's "maximum number of hops" asks.
+/// A node forwards a message id to its live neighbours except the one it came from, while the
+/// message has crossed fewer than `max_hops` links: the first time it sees the id, and again
+/// only when a copy arrives over fewer hops than every earlier one. Link delays differ, so the
+/// first copy may have come the long way round; were it the only one forwarded, a node three
+/// hops out could be missed although a three-hop path exists. Hop counts only fall, so a
+/// message costs at most `max_hops` transmissions per link direction — never a storm — and
+/// every node within `max_hops` of the origin is reached when links lose nothing. A unicast whose
+/// destination is a live neighbour goes over that one link only. A message that cannot reach its
+/// destination within the hop limit is not delivered, as Table 2's "maximum number of hops" asks.
 class flood_router {
  public:
   /// The router of node `self`, remembering the last `memory` message ids it has seen.
@@ -34,17 +38,18 @@ class flood_router {
   /// that link); `live_neighbours` sorted.
   routing_decision receive(const net_message& m, int from, const std::vector<int>& live_neighbours);
 
-  /// Messages dropped because this node had seen them before.
+  /// Copies dropped because this node had seen the message over as few hops before.
   std::uint64_t duplicates_suppressed() const noexcept { return duplicates_; }
 
  private:
-  bool remember(std::uint64_t id);
+  enum class sighting { first, fewer_hops, duplicate };
+  sighting remember(std::uint64_t id, std::uint8_t hops);
   std::vector<int> next_hops(const net_message& m, int from,
                              const std::vector<int>& live_neighbours) const;
 
   int self_;
   std::size_t memory_;
-  std::unordered_set<std::uint64_t> seen_;
+  std::unordered_map<std::uint64_t, std::uint8_t> seen_;  // id -> fewest hops seen
   std::deque<std::uint64_t> seen_order_;
   std::uint64_t duplicates_ = 0;
 };

@@ -11,6 +11,12 @@ std::int64_t ticks_of(config::seconds d, config::seconds tick) {
   return std::max<std::int64_t>(1, static_cast<std::int64_t>(std::llround(d / tick)));
 }
 
+// The last tick at which an answer is still within `d` of the request: an answer read
+// later has taken longer than `d`, so the peer is declared failed on the first such tick.
+std::int64_t last_tick_within(config::seconds d, config::seconds tick) {
+  return std::max<std::int64_t>(1, static_cast<std::int64_t>(std::floor(d / tick + 1e-9)));
+}
+
 }  // namespace
 
 node_network::node_network(int self, std::vector<int> attached, const config::scenario& s)
@@ -20,7 +26,7 @@ node_network::node_network(int self, std::vector<int> attached, const config::sc
       max_hops_(static_cast<std::uint8_t>(std::min(255u, s.network.max_hops))),
       heartbeat_ticks_(ticks_of(s.controller.heartbeat_interval, s.run.tick)),
       silence_ticks_(ticks_of(s.controller.member_failure_timeout, s.run.tick)),
-      timeout_ticks_(ticks_of(s.network.message_timeout, s.run.tick)) {
+      timeout_ticks_(last_tick_within(s.network.message_timeout, s.run.tick)) {
   std::sort(attached_.begin(), attached_.end());
 }
 

@@ -7,21 +7,15 @@
 #include "actors/system_config.hpp"
 #include "caf/test/dsl.hpp"
 #include "caf/test/unit_test_impl.hpp"
-#include "tests/actors/test_participants.hpp"
+#include "tests/actors/recording_fixture.hpp"
 
 using namespace argus::actors;
 using namespace argus::actors::testing;
 
 namespace {
 
-struct test_config : system_config {
-  test_config() : system_config(1) {}
-};
-
-struct fixture : test_coordinator_fixture<test_config> {
-  std::shared_ptr<recorded> rec = std::make_shared<recorded>();
+struct fixture : recording_fixture {
   std::shared_ptr<probe_log> log = std::make_shared<probe_log>();
-  caf::actor recorder = sys.spawn(fake_recorder, rec);
 
   caf::actor make_clock(std::int64_t end_tick, double speed = 0.0) {
     clock_settings s;

@@ -12,7 +12,7 @@
 #include "actors/system_config.hpp"
 #include "caf/test/dsl.hpp"
 #include "caf/test/unit_test_impl.hpp"
-#include "tests/actors/test_participants.hpp"
+#include "tests/actors/recording_fixture.hpp"
 
 using namespace argus;
 using namespace argus::actors;
@@ -100,13 +100,7 @@ caf::behavior commander(caf::event_based_actor* self, caf::actor link, std::uint
   };
 }
 
-struct test_config : system_config {
-  test_config() : system_config(1) {}
-};
-
-struct fixture : test_coordinator_fixture<test_config> {
-  std::shared_ptr<recorded> rec = std::make_shared<recorded>();
-  caf::actor recorder = sys.spawn(fake_recorder, rec);
+struct fixture : recording_fixture {
   std::shared_ptr<endpoint_log> at1 = std::make_shared<endpoint_log>();
   std::shared_ptr<endpoint_log> at2 = std::make_shared<endpoint_log>();
   caf::actor clock;
