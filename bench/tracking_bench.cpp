@@ -27,11 +27,13 @@
 // Usage: tracking_bench [--seconds S] [--cameras N] [--width PX --height PX]
 //                       [--signature first_frame|appearance] [--json FILE] [--scenario FILE]
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
