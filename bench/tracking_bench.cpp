@@ -376,8 +376,15 @@ int main(int argc, char** argv) {
   if (seconds <= 0.0 || cameras == 0 || width < 16 || height < 16)
     usage("--seconds, --cameras must be positive and the frame at least 16 x 16");
 
-  const auto scenario = config::load_scenario(scenario_path);
-  const auto where = world::station::load(world::layout_path(scenario));
+  config::scenario scenario;
+  std::shared_ptr<const world::station> where;
+  try {
+    scenario = config::load_scenario(scenario_path);
+    where = world::station::load(world::layout_path(scenario));
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "tracking_bench: %s\n", e.what());
+    return 2;
+  }
   vision::renderer render(where);
   std::vector<cell_result> cells;
   // Fractions of the frames in which the target is in the station.
