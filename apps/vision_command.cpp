@@ -228,7 +228,7 @@ void add_vision_command(CLI::App& app, int& result) {
   fit->add_option("--scale-divisor", calibration->scale_divisor,
                   "Localiser kernel sizes l = (0.1..1) x h / D (default 7, the paper's; larger "
                   "for small pedestrians)")
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::Range(1.0, 1000.0));
   fit->add_option("--out", calibration->out, "Model file to write (YAML)")->required();
   fit->callback([calibration, &result] { result = calibrate(*calibration); });
 }
