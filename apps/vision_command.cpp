@@ -79,6 +79,12 @@ struct calibrate_arguments {
   int width = 320;
   int height = 240;
   std::optional<std::uint64_t> seed;
+  // Zoomed poses: cameras track at a narrow field of view (the fixate and zoom controller
+  // makes the target half the frame high), where pedestrians are tall enough for the
+  // localiser's kernels; the default poses see most of them only a few pixels high.
+  std::optional<double> field_of_view_deg;
+  // Localiser kernels l = (0.1..1) x h / scale_divisor; 7 is the paper's.
+  double scale_divisor = 7.0;
   std::string out;
 };
 
@@ -124,8 +130,9 @@ int calibrate(const calibrate_arguments& args) {
       config::imaging_model imaging = c.imaging;
       imaging.width_px = static_cast<unsigned>(args.width);
       imaging.height_px = static_cast<unsigned>(args.height);
-      cameras.push_back({{vision::camera_placement::from(c), vision::ptz_camera::from(c).state(),
-                          args.width, args.height},
+      auto pose = vision::ptz_camera::from(c).state();
+      if (args.field_of_view_deg) pose.field_of_view_deg = *args.field_of_view_deg;
+      cameras.push_back({{vision::camera_placement::from(c), pose, args.width, args.height},
                          vision::imaging_model::for_camera(imaging, scenario.run.seed, c.id)});
     }
     std::vector<vision::calibration_trial> trials;
@@ -140,7 +147,8 @@ int calibrate(const calibrate_arguments& args) {
             camera.imaging.interlaced()
                 ? camera.imaging.apply(image, renderer.render(camera.view, frame, t + tick_s / 2.0))
                 : camera.imaging.apply(image);
-        auto more = vision::pixel_trials(image, frame, *station, camera.view);
+        auto more =
+            vision::pixel_trials(image, frame, *station, camera.view, 0.4, args.scale_divisor);
         trials.insert(trials.end(), more.begin(), more.end());
       }
     }
@@ -157,11 +165,12 @@ int calibrate(const calibrate_arguments& args) {
     out << fmt::format(
         "# Emulated sensor error model (vision/sensor_model.hpp), fitted by:\n"
         "#   argus vision calibrate {} --start '{}' --duration '{}' --every '{}' --cameras {} "
-        "--width {} --height {}{} --out {}\n"
+        "--width {} --height {}{}{} --scale-divisor {} --out {}\n"
         "# {} trials: miss rate {:.3f}, confusion rate {:.3f} (pixel pipeline)\n",
         args.scenario, args.start, args.duration, args.every, args.cameras, args.width, args.height,
-        args.seed ? fmt::format(" --seed {}", *args.seed) : "", args.out, rates.trials, rates.miss,
-        rates.confusion);
+        args.seed ? fmt::format(" --seed {}", *args.seed) : "",
+        args.field_of_view_deg ? fmt::format(" --field-of-view {}", *args.field_of_view_deg) : "",
+        args.scale_divisor, args.out, rates.trials, rates.miss, rates.confusion);
     out << vision::to_yaml(model);
     std::cout << fmt::format("{}: {} cameras, {} trials; model written to {}\n", scenario.name,
                              cameras.size(), rates.trials, args.out);
@@ -212,6 +221,14 @@ void add_vision_command(CLI::App& app, int& result) {
   fit->add_option("--height", calibration->height, "Image height (default 240)")
       ->check(CLI::Range(16, 8192));
   fit->add_option("--seed", calibration->seed, "Run seed (default: the scenario's)");
+  fit->add_option("--field-of-view", calibration->field_of_view_deg,
+                  "Horizontal field of view of every camera, degrees (default: each camera's "
+                  "own); zoomed poses as when tracking")
+      ->check(CLI::Range(1.0, 179.0));
+  fit->add_option("--scale-divisor", calibration->scale_divisor,
+                  "Localiser kernel sizes l = (0.1..1) x h / D (default 7, the paper's; larger "
+                  "for small pedestrians)")
+      ->check(CLI::Range(1.0, 1000.0));
   fit->add_option("--out", calibration->out, "Model file to write (YAML)")->required();
   fit->callback([calibration, &result] { result = calibrate(*calibration); });
 }

@@ -4,7 +4,9 @@
 #include <cmath>
 #include <limits>
 #include <span>
+#include <stdexcept>
 
+#include "fmt/format.h"
 #include "opencv2/imgproc.hpp"
 
 namespace argus::vision {
@@ -24,10 +26,12 @@ region_scorer histogram_scorer(const cv::Mat& bin_indices, const color_histogram
   };
 }
 
-std::vector<int> paper_scales(int frame_height_px) {
+std::vector<int> paper_scales(int frame_height_px, double divisor) {
+  if (!(divisor > 0.0))
+    throw std::invalid_argument(fmt::format("paper_scales: divisor must be > 0, not {}", divisor));
   std::vector<int> scales;
   for (int k = 1; k <= 10; ++k) {
-    int l = static_cast<int>(std::lround(0.1 * k * frame_height_px / 7.0));
+    int l = static_cast<int>(std::lround(0.1 * k * frame_height_px / divisor));
     l = std::max(l, 1);
     if (scales.empty() || scales.back() != l) scales.push_back(l);
   }

@@ -41,8 +41,11 @@ using region_scorer = std::function<double(const cv::Rect&)>;
 region_scorer histogram_scorer(const cv::Mat& bin_indices, const color_histogram& target);
 
 /// The kernel sizes l = (0.1, 0.2, ..., 1) x h / 7 for a frame h pixels high, each rounded
-/// to the nearest integer and at least 1, duplicates removed (Section III-B).
-std::vector<int> paper_scales(int frame_height_px);
+/// to the nearest integer and at least 1, duplicates removed (Section III-B). With another
+/// `divisor` d, l = (0.1, ..., 1) x h / d: the largest kernel, 6 h / d + 1 rows, is 86 % of
+/// the frame height at the paper's d = 7, taller than any pedestrian a wide view shows; a
+/// larger d (e.g. 28) suits small pedestrians. Throws std::invalid_argument unless d > 0.
+std::vector<int> paper_scales(int frame_height_px, double divisor = 7.0);
 
 /// The domain of the (6l + 1) x (2l + 1) kernel of size l centred at `centre` (not clipped).
 cv::Rect kernel_domain(cv::Point centre, int l);

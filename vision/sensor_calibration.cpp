@@ -46,13 +46,13 @@ Eigen::VectorXd fit_logistic(const Eigen::MatrixXd& x, const Eigen::VectorXd& y,
 
 std::vector<calibration_trial> pixel_trials(const cv::Mat& frame_bgr, const world::snapshot& frame,
                                             const world::station& where, const camera_view& view,
-                                            double rho) {
+                                            double rho, double scale_divisor) {
   std::vector<calibration_trial> trials;
   const auto seen = visible_pedestrians(frame, where, view);
   std::vector<color_histogram> signatures;
   for (const auto& v : seen) signatures.push_back(appearance_signature(frame.find(v.id)->look));
   const cv::Rect2d image(0.0, 0.0, frame_bgr.cols, frame_bgr.rows);
-  multiscale_localizer localizer({{}, rho, 1});
+  multiscale_localizer localizer({paper_scales(frame_bgr.rows, scale_divisor), rho, 1});
   const sensor_model limits;
   for (std::size_t i = 0; i < seen.size(); ++i) {
     calibration_trial trial;

@@ -1,8 +1,11 @@
 // The shipped emulated sensor model (scenarios/sensor_model.yaml, fitted by `argus vision
-// calibrate` on penn_station, seed of the scenario, t = 30..90 s) against the pixel pipeline
-// on a held-out run: another seed and another time window, same four cameras at 320 x 240.
-// Tolerances: miss rate within 0.05, confusion rate (few samples: the pixel pipeline finds
-// few pedestrians) within 0.25.
+// calibrate` on penn_station, seed of the scenario, t = 30..270 s, all 16 cameras zoomed to
+// a 20 degree field of view at 320 x 240, kernels paper_scales(h, 28)) against the pixel
+// pipeline on a held-out run: another seed and another time window (t = 100..160 s), same
+// cameras, zoom and kernels. Tolerances: miss rate within 0.07, confusion rate within 0.08.
+// The model sees occlusion and height only; what it does not see (how crowded, how alike the
+// people in view are) moves the pixel pipeline's miss rate by about 0.05 from one window to
+// another (0.52 in the calibration window, 0.58 in this one, emulated 0.53).
 #include <gtest/gtest.h>
 
 #include "config/scenario_loader.hpp"
@@ -14,6 +17,12 @@
 
 namespace argus::vision {
 namespace {
+
+// The calibration's conditions (see the header of scenarios/sensor_model.yaml): the zoom at
+// which cameras track, where pedestrians are 20-160 px high, and the smaller kernels.
+constexpr double field_of_view_deg = 20.0;
+constexpr double scale_divisor = 28.0;
+constexpr std::size_t cameras = 16;
 
 TEST(emulated_sensor_fidelity, rates_match_the_pixel_pipeline_on_a_held_out_run) {
   auto scenario = config::load_scenario(ARGUS_SOURCE_DIR "/scenarios/penn_station.yaml");
@@ -29,17 +38,19 @@ TEST(emulated_sensor_fidelity, rates_match_the_pixel_pipeline_on_a_held_out_run)
   std::vector<camera_view> views;
   std::vector<imaging_model> imaging;
   std::vector<emulated_sensor> sensors;
-  for (std::size_t c = 0; c < 4 && c < scenario.cameras.size(); ++c) {
+  for (std::size_t c = 0; c < cameras && c < scenario.cameras.size(); ++c) {
     const auto& camera = scenario.cameras[c];
     auto settings = camera.imaging;
     settings.width_px = 320;
     settings.height_px = 240;
-    views.push_back({camera_placement::from(camera), ptz_camera::from(camera).state(), 320, 240});
+    auto pose = ptz_camera::from(camera).state();
+    pose.field_of_view_deg = field_of_view_deg;
+    views.push_back({camera_placement::from(camera), pose, 320, 240});
     imaging.push_back(imaging_model::for_camera(settings, scenario.run.seed, camera.id));
     sensors.push_back(emulated_sensor::for_camera(model, scenario.run.seed, camera.id));
   }
-  // Held-out window t = 100..130 s, a frame every second.
-  const int first = ticks_of(100.0), last = ticks_of(130.0), stride = ticks_of(1.0);
+  // Held-out window t = 100..160 s, a frame every second.
+  const int first = ticks_of(100.0), last = ticks_of(160.0), stride = ticks_of(1.0);
   for (int tick = 1; tick <= last; ++tick) {
     crowd.step();
     if (tick < first || (tick - first) % stride != 0) continue;
@@ -49,7 +60,7 @@ TEST(emulated_sensor_fidelity, rates_match_the_pixel_pipeline_on_a_held_out_run)
       image = imaging[c].interlaced()
                   ? imaging[c].apply(image, render.render(views[c], frame, (tick + 0.5) * tick_s))
                   : imaging[c].apply(image);
-      auto p = pixel_trials(image, frame, *station, views[c]);
+      auto p = pixel_trials(image, frame, *station, views[c], 0.4, scale_divisor);
       pixels.insert(pixels.end(), p.begin(), p.end());
       auto e = emulated_trials(sensors[c], frame, *station, views[c]);
       emulated.insert(emulated.end(), e.begin(), e.end());
@@ -59,8 +70,11 @@ TEST(emulated_sensor_fidelity, rates_match_the_pixel_pipeline_on_a_held_out_run)
   const auto emulation = rates_of(emulated);
   ASSERT_GT(truth.trials, 500);
   EXPECT_EQ(truth.trials, emulation.trials);
-  EXPECT_NEAR(emulation.miss, truth.miss, 0.05);
-  EXPECT_NEAR(emulation.confusion, truth.confusion, 0.25);
+  EXPECT_NEAR(emulation.miss, truth.miss, 0.07);
+  // A calibration that means something: most pedestrians are found (it was 0.97 missed at
+  // the default wide poses with the paper's kernels).
+  EXPECT_LT(truth.miss, 0.7);
+  EXPECT_NEAR(emulation.confusion, truth.confusion, 0.08);
   std::printf(
       "held out: %d trials; miss pixel %.3f emulated %.3f; confusion pixel %.3f emulated "
       "%.3f\n",

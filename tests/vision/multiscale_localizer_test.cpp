@@ -72,6 +72,9 @@ TEST(multiscale_localizer, paper_scales) {
   // h = 240: l = (0.1 .. 1) x 240 / 7 = 3.4, 6.9, ..., 34.3.
   EXPECT_EQ(paper_scales(240), (std::vector<int>{3, 7, 10, 14, 17, 21, 24, 27, 31, 34}));
   EXPECT_EQ(paper_scales(10), (std::vector<int>{1}));
+  // A larger divisor gives smaller kernels: l = (0.1..1) x 240 / 28.
+  EXPECT_EQ(paper_scales(240, 28.0), (std::vector<int>{1, 2, 3, 4, 5, 6, 7, 8, 9}));
+  EXPECT_THROW(paper_scales(240, 0.0), std::invalid_argument);
   EXPECT_EQ(kernel_domain({10, 20}, 2), cv::Rect(8, 14, 5, 13));  // (6l + 1) x (2l + 1)
 }
 
