@@ -8,11 +8,12 @@ set(argus_vision_lvr_tests
   fixate_zoom_test
   relevance_test
   emulated_sensor_test
-  emulated_sensor_fidelity_test)
+  emulated_sensor_fidelity_test
+  rendered_localization_test)
 
 foreach(test_name IN LISTS argus_vision_lvr_tests)
   add_executable(vision_${test_name} ${CMAKE_CURRENT_LIST_DIR}/${test_name}.cpp)
-  target_link_libraries(vision_${test_name} PRIVATE argus_vision argus_world GTest::gtest_main)
+  target_link_libraries(vision_${test_name} PRIVATE argus_vision argus_world opencv_imgcodecs GTest::gtest_main)
   add_test(NAME vision.${test_name} COMMAND vision_${test_name})
   set_tests_properties(vision.${test_name} PROPERTIES TIMEOUT 600 LABELS "vision")
 endforeach()
