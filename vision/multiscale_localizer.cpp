@@ -1,11 +1,19 @@
 #include "vision/multiscale_localizer.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <span>
+#include <string_view>
 
 #include "opencv2/imgproc.hpp"
+
+#if defined(__GNUC__) && defined(__x86_64__)
+#include <immintrin.h>
+#define ARGUS_LOCALIZER_X86 1
+#endif
 
 namespace argus::vision {
 namespace {
@@ -14,6 +22,137 @@ namespace {
 constexpr double empty_response = 1e-6;
 // Marks points of the summed response inside an accepted box (B >= 0, so sums are >= 0).
 constexpr float suppressed = -1.0f;
+
+// One row of box sums for one kernel size l: B_l(x, y) = (bottom_right[x] - bottom_left[x]) -
+// (top_right[x] - top_left[x]), the four corners of the kernel in the integral image rows
+// above (y - 3l) and below (y + 3l + 1) it, at columns x + l + 1 and x - l.
+struct box_rows {
+  const double* top_left;
+  const double* top_right;
+  const double* bottom_left;
+  const double* bottom_right;
+};
+
+box_rows corners(const double* top, const double* bottom, int l) {
+  return {top - l, top + l + 1, bottom - l, bottom + l + 1};
+}
+
+// out[x] = sum_k (float)B_k(x), added in k order starting from 0: sum_l B_l(x, y) along a
+// row segment of `width` pixels (Fig. 9, steps 1 and 2). Every variant below does exactly
+// these IEEE operations per pixel, in this order (no FMA: there is no product), so all give
+// the same bits; the vector ones keep the running sums in registers across the kernel sizes.
+void sum_row_default(const box_rows* rows, int count, int width, float* __restrict out) {
+  for (int x = 0; x < width; ++x) out[x] = 0.0f;
+  for (int k = 0; k < count; ++k) {
+    const double* __restrict tl = rows[k].top_left;
+    const double* __restrict tr = rows[k].top_right;
+    const double* __restrict bl = rows[k].bottom_left;
+    const double* __restrict br = rows[k].bottom_right;
+    for (int x = 0; x < width; ++x) out[x] += static_cast<float>((br[x] - bl[x]) - (tr[x] - tl[x]));
+  }
+}
+
+#ifdef ARGUS_LOCALIZER_X86
+
+__attribute__((target("avx2"))) void sum_row_avx2(const box_rows* rows, int count, int width,
+                                                  float* __restrict out) {
+  int x = 0;
+  for (; x + 16 <= width; x += 16) {
+    __m128 sum[4] = {_mm_setzero_ps(), _mm_setzero_ps(), _mm_setzero_ps(), _mm_setzero_ps()};
+    for (int k = 0; k < count; ++k) {
+      const box_rows& r = rows[k];
+      for (int i = 0; i < 4; ++i) {
+        const int at = x + 4 * i;
+        const __m256d box = _mm256_sub_pd(
+            _mm256_sub_pd(_mm256_loadu_pd(r.bottom_right + at),
+                          _mm256_loadu_pd(r.bottom_left + at)),
+            _mm256_sub_pd(_mm256_loadu_pd(r.top_right + at), _mm256_loadu_pd(r.top_left + at)));
+        sum[i] = _mm_add_ps(sum[i], _mm256_cvtpd_ps(box));
+      }
+    }
+    for (int i = 0; i < 4; ++i) _mm_storeu_ps(out + x + 4 * i, sum[i]);
+  }
+  for (; x < width; ++x) {
+    float sum = 0.0f;
+    for (int k = 0; k < count; ++k) {
+      const box_rows& r = rows[k];
+      sum += static_cast<float>((r.bottom_right[x] - r.bottom_left[x]) -
+                                (r.top_right[x] - r.top_left[x]));
+    }
+    out[x] = sum;
+  }
+}
+
+// 32 pixels at a time; masked loads at the end of the segment read nothing and give 0.
+__attribute__((target("avx512f"))) void sum_row_avx512(const box_rows* rows, int count, int width,
+                                                       float* __restrict out) {
+  int x = 0;
+  for (; x + 32 <= width; x += 32) {
+    __m256 sum[4] = {_mm256_setzero_ps(), _mm256_setzero_ps(), _mm256_setzero_ps(),
+                     _mm256_setzero_ps()};
+    for (int k = 0; k < count; ++k) {
+      const box_rows& r = rows[k];
+      for (int i = 0; i < 4; ++i) {
+        const int at = x + 8 * i;
+        const __m512d box = _mm512_sub_pd(
+            _mm512_sub_pd(_mm512_loadu_pd(r.bottom_right + at),
+                          _mm512_loadu_pd(r.bottom_left + at)),
+            _mm512_sub_pd(_mm512_loadu_pd(r.top_right + at), _mm512_loadu_pd(r.top_left + at)));
+        sum[i] = _mm256_add_ps(sum[i], _mm512_maskz_cvtpd_ps(0xff, box));
+      }
+    }
+    for (int i = 0; i < 4; ++i) _mm256_storeu_ps(out + x + 8 * i, sum[i]);
+  }
+  for (; x < width; x += 8) {
+    const int left = width - x;
+    const __mmask8 m = left >= 8 ? __mmask8(0xff) : __mmask8((1u << left) - 1);
+    __m256 sum = _mm256_setzero_ps();
+    for (int k = 0; k < count; ++k) {
+      const box_rows& r = rows[k];
+      const __m512d box = _mm512_sub_pd(_mm512_sub_pd(_mm512_maskz_loadu_pd(m, r.bottom_right + x),
+                                                      _mm512_maskz_loadu_pd(m, r.bottom_left + x)),
+                                        _mm512_sub_pd(_mm512_maskz_loadu_pd(m, r.top_right + x),
+                                                      _mm512_maskz_loadu_pd(m, r.top_left + x)));
+      sum = _mm256_add_ps(sum, _mm512_maskz_cvtpd_ps(0xff, box));
+    }
+    alignas(32) float sums[8];
+    _mm256_store_ps(sums, sum);
+    std::copy_n(sums, std::min(left, 8), out + x);
+  }
+}
+
+#endif
+
+using sum_row_function = void (*)(const box_rows*, int, int, float*);
+
+// The fastest variant this CPU runs, picked once.
+// ARGUS_LOCALIZER_SIMD=avx2 or =default caps the choice (the tests run every variant).
+sum_row_function pick_sum_row() {
+#ifdef ARGUS_LOCALIZER_X86
+  const char* cap = std::getenv("ARGUS_LOCALIZER_SIMD");
+  const std::string_view limit = cap != nullptr ? cap : "";
+  __builtin_cpu_init();
+  if (limit.empty() && __builtin_cpu_supports("avx512f")) return sum_row_avx512;
+  if (limit != "default" && __builtin_cpu_supports("avx2")) return sum_row_avx2;
+#endif
+  return sum_row_default;
+}
+
+const sum_row_function sum_row = pick_sum_row();
+
+// The largest of `values` (exact in any order; no NaN here). Sixteen lanes so that the
+// compiler keeps them in one vector register.
+float max_of(const float* values, int count) {
+  float lanes[16];
+  std::fill_n(lanes, 16, -std::numeric_limits<float>::infinity());
+  int x = 0;
+  for (; x + 16 <= count; x += 16)
+    for (int i = 0; i < 16; ++i) lanes[i] = values[x + i] > lanes[i] ? values[x + i] : lanes[i];
+  float best = -std::numeric_limits<float>::infinity();
+  for (; x < count; ++x) best = values[x] > best ? values[x] : best;
+  for (int i = 0; i < 16; ++i) best = lanes[i] > best ? lanes[i] : best;
+  return best;
+}
 
 }  // namespace
 
@@ -56,48 +195,51 @@ multiscale_localizer::multiscale_localizer(localizer_settings settings)
 }
 
 // The integral image of B extended with zero columns (work_ between pad_x_ zero columns on
-// each side), from row `first_row` on; rows above it are kept:
+// each side), from row `first_row` and column `first_col` of work_ on; the rest is kept:
 // I(y + 1, x + 1) = I(y, x + 1) + sum_{x' <= x} P(y, x'), accumulated in double. The zero
 // rows above and below B are not stored: row() clamps to rows 0 and height, whose sums they
 // equal. The side columns add only zeros, so they are filled by copying instead of summing.
-// Rows are computed the same way from scratch and after a removal, so the incremental
-// update of step 6 gives bit-identical sums to a full recomputation.
-void multiscale_localizer::update_integral(int first_row) {
+// Entries are computed the same way from scratch and after a removal, so the incremental
+// update of step 6 gives bit-identical sums to a full recomputation: a box zeroed in work_
+// changes the running sums P only in its own rows, from its left column on, and I only
+// below its top row and right of its left column.
+void multiscale_localizer::update_integral(int first_row, int first_col, int last_row) {
   const int width = work_.cols;
   const int height = work_.rows;
   const int cols = width + 2 * pad_x_ + 1;
-  if (first_row == 0) {
+  if (first_row == 0 && first_col == 0) {
     integral_.create(height + 1, cols, CV_64F);
     std::fill_n(integral_.ptr<double>(0), cols, 0.0);
+    prefix_.create(height, width, CV_64F);
   }
   // Pass 1: each row's running sums, four rows at a time so that their add chains overlap.
-  prefix_.create(height, width, CV_64F);
   int y = first_row;
-  for (; y + 4 <= height; y += 4) {
+  for (; y + 4 <= last_row; y += 4) {
     const float* in[4];
     double* out[4];
-    double row_sum[4] = {0.0, 0.0, 0.0, 0.0};
+    double row_sum[4];
     for (int r = 0; r < 4; ++r) {
       in[r] = work_.ptr<float>(y + r);
       out[r] = prefix_.ptr<double>(y + r);
+      row_sum[r] = first_col > 0 ? out[r][first_col - 1] : 0.0;
     }
-    for (int x = 0; x < width; ++x)
+    for (int x = first_col; x < width; ++x)
       for (int r = 0; r < 4; ++r) out[r][x] = row_sum[r] += in[r][x];
   }
-  for (; y < height; ++y) {
+  for (; y < last_row; ++y) {
     const float* in = work_.ptr<float>(y);
     double* out = prefix_.ptr<double>(y);
-    double row_sum = 0.0;
-    for (int x = 0; x < width; ++x) out[x] = row_sum += in[x];
+    double row_sum = first_col > 0 ? out[first_col - 1] : 0.0;
+    for (int x = first_col; x < width; ++x) out[x] = row_sum += in[x];
   }
-  // Pass 2: I(y + 1, x + 1) = I(y, x + 1) + running sum.
+  // Pass 2: I(y + 1, x + 1) = I(y, x + 1) + running sum, for every row from first_row on.
   for (y = first_row; y < height; ++y) {
     const double* __restrict sums = prefix_.ptr<double>(y);
     const double* __restrict above = integral_.ptr<double>(y) + pad_x_ + 1;
     double* __restrict out = integral_.ptr<double>(y + 1);
-    std::fill_n(out, pad_x_ + 1, 0.0);
+    if (first_col == 0) std::fill_n(out, pad_x_ + 1, 0.0);
     out += pad_x_ + 1;
-    for (int x = 0; x < width; ++x) out[x] = above[x] + sums[x];
+    for (int x = first_col; x < width; ++x) out[x] = above[x] + sums[x];
     std::fill_n(out + width, pad_x_, out[width - 1]);
   }
 }
@@ -109,43 +251,57 @@ const double* multiscale_localizer::row(int y) const {
 // Fig. 9, steps 1 and 2 for the pixels in `area`: sum_l B_l(x, y), each B_l(x, y) a box sum
 // over the integral image (four look-ups), rounded to float and added in scale order. The
 // B_l themselves are not stored: steps 3 and 4 need them only near the peak. This loop is
-// most of the localiser's time; an AVX2 clone (picked at load time where the CPU has it)
-// does four box sums at once with the same operations, hence the same results.
-#if defined(__GNUC__) && defined(__x86_64__)
-__attribute__((target_clones("avx2", "default")))
-#endif
+// most of the localiser's time; sum_row() runs it with the widest vectors the CPU has, with
+// the same operations, hence the same results. Also refreshes the row maxima of the area.
 void multiscale_localizer::compute_sum(const cv::Rect& area) {
+  std::array<box_rows, 64> small;
+  std::vector<box_rows> large;
+  box_rows* rows = small.data();
+  const int count = static_cast<int>(scales_.size());
+  if (scales_.size() > small.size()) {
+    large.resize(scales_.size());
+    rows = large.data();
+  }
   for (int y = area.y; y < area.y + area.height; ++y) {
-    float* __restrict sum = sum_.ptr<float>(y) + area.x;
-    std::fill_n(sum, area.width, 0.0f);
-    for (const int l : scales_) {
-      const double* __restrict top = row(y - 3 * l) + area.x;
-      const double* __restrict bottom = row(y + 3 * l + 1) + area.x;
-      for (int x = 0; x < area.width; ++x)
-        sum[x] +=
-            static_cast<float>((bottom[x + l + 1] - bottom[x - l]) - (top[x + l + 1] - top[x - l]));
+    for (int k = 0; k < count; ++k) {
+      const int l = scales_[k];
+      rows[k] = corners(row(y - 3 * l) + area.x, row(y + 3 * l + 1) + area.x, l);
     }
+    sum_row(rows, count, area.width, sum_.ptr<float>(y) + area.x);
   }
 }
 
-// B_l over `area` into `out` (CV_32F, area.size()), as compute_sum() evaluates it.
-void multiscale_localizer::compute_response(int l, const cv::Rect& area, cv::Mat& out) const {
-  out.create(area.height, area.width, CV_32F);
-  for (int y = area.y; y < area.y + area.height; ++y) {
-    const double* top = row(y - 3 * l) + area.x;
-    const double* bottom = row(y + 3 * l + 1) + area.x;
-    float* row = out.ptr<float>(y - area.y);
-    for (int x = 0; x < area.width; ++x)
-      row[x] =
-          static_cast<float>((bottom[x + l + 1] - bottom[x - l]) - (top[x + l + 1] - top[x - l]));
+// Step 2: the first maximum of sum_ in row-major order (as cv::minMaxLoc finds it), from the
+// maxima of the rows.
+cv::Point multiscale_localizer::peak_of_sum() {
+  const int height = sum_.rows;
+  const int width = sum_.cols;
+  row_max_.resize(height);
+  for (int y = 0; y < height; ++y) row_max_[y] = max_of(sum_.ptr<float>(y), width);
+  const float best = max_of(row_max_.data(), height);
+  const int y =
+      static_cast<int>(std::find(row_max_.begin(), row_max_.end(), best) - row_max_.begin());
+  const float* values = sum_.ptr<float>(y);
+  return {static_cast<int>(std::find(values, values + width, best) - values), y};
+}
+
+// B_l over `area` into `out` (area.width x area.height, row-major), as compute_sum()
+// evaluates it.
+void multiscale_localizer::compute_response(int l, const cv::Rect& area, float* out) const {
+  for (int y = area.y; y < area.y + area.height; ++y, out += area.width) {
+    const box_rows rows = corners(row(y - 3 * l) + area.x, row(y + 3 * l + 1) + area.x, l);
+    sum_row(&rows, 1, area.width, out);
   }
 }
 
 const std::vector<cv::Mat>& multiscale_localizer::responses() const {
   if (responses_.size() != scales_.size()) {
     responses_.resize(scales_.size());
-    for (std::size_t k = 0; k < scales_.size(); ++k)
-      compute_response(scales_[k], cv::Rect(0, 0, work_.cols, work_.rows), responses_[k]);
+    for (std::size_t k = 0; k < scales_.size(); ++k) {
+      responses_[k].create(work_.rows, work_.cols, CV_32F);
+      compute_response(scales_[k], cv::Rect(0, 0, work_.cols, work_.rows),
+                       responses_[k].ptr<float>(0));
+    }
   }
   return responses_;
 }
@@ -164,39 +320,62 @@ std::vector<localized_region> multiscale_localizer::localize(const cv::Mat& back
   CV_Assert(*std::min_element(scales_.begin(), scales_.end()) >= 0);
   pad_x_ = largest + 1;
   const cv::Rect image(0, 0, width, height);
-  update_integral(0);
+  update_integral(0, 0, height);
   sum_.create(height, width, CV_32F);
 
   // Step 1 (all of the image) and the sum for step 2.
   compute_sum(image);
 
+  const std::size_t scale_count = scales_.size();
+  std::vector<cv::Rect> domains(scale_count);
+  std::vector<std::size_t> offsets(scale_count + 1);
+  std::vector<double> peaks(scale_count), squares(scale_count);
+  std::vector<std::size_t> order(scale_count);
   while (static_cast<int>(found.size()) < settings_.max_regions) {
     // Step 2: the peak of the summed response.
-    double best = 0.0;
-    cv::Point centre;
-    cv::minMaxLoc(sum_, nullptr, &best, nullptr, &centre);
+    const cv::Point centre = peak_of_sum();
+    const double best = sum_.at<float>(centre);
     if (best <= empty_response) break;
 
-    // Steps 3 and 4: per scale, the peak inside the kernel domain and its sharpness.
+    // Step 3: per scale, B_l over the kernel domain and its peak.
+    offsets[0] = 0;
+    for (std::size_t k = 0; k < scale_count; ++k) {
+      domains[k] = kernel_domain(centre, scales_[k]) & image;
+      offsets[k + 1] = offsets[k] + static_cast<std::size_t>(domains[k].area());
+    }
+    domain_responses_.resize(offsets[scale_count]);
+    for (std::size_t k = 0; k < scale_count; ++k) {
+      float* response = domain_responses_.data() + offsets[k];
+      compute_response(scales_[k], domains[k], response);
+      peaks[k] = max_of(response, domains[k].area());
+      squares[k] = 0.0;
+    }
+    // Step 4: sum_K (peak - B_l)^2 per scale, each over its domain in row-major order. The
+    // scales' sums are independent chains of dependent adds; they advance together (the
+    // shortest leaving first) so that the adds overlap, each still in its own order.
+    for (std::size_t k = 0; k < scale_count; ++k) order[k] = k;
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      return offsets[a + 1] - offsets[a] < offsets[b + 1] - offsets[b];
+    });
+    std::size_t done = 0;
+    for (std::size_t first = 0; first < scale_count; ++first) {
+      const std::size_t k0 = order[first];
+      const std::size_t end = offsets[k0 + 1] - offsets[k0];
+      for (std::size_t i = done; i < end; ++i)
+        for (std::size_t c = first; c < scale_count; ++c) {
+          const std::size_t k = order[c];
+          const double d = peaks[k] - domain_responses_[offsets[k] + i];
+          squares[k] += d * d;
+        }
+      done = end;
+    }
     int best_scale = scales_.front();
     double best_sharpness = -1.0;
-    for (const int l : scales_) {
-      const auto domain = kernel_domain(centre, l) & image;
-      compute_response(l, domain, scratch_);
-      double peak = 0.0;
-      cv::minMaxLoc(scratch_, nullptr, &peak);
-      double squares = 0.0;
-      for (int y = 0; y < scratch_.rows; ++y) {
-        const float* row = scratch_.ptr<float>(y);
-        for (int x = 0; x < scratch_.cols; ++x) {
-          double d = peak - row[x];
-          squares += d * d;
-        }
-      }
-      double sharpness = squares / domain.area();
+    for (std::size_t k = 0; k < scale_count; ++k) {
+      const double sharpness = squares[k] / domains[k].area();
       if (sharpness > best_sharpness) {
         best_sharpness = sharpness;
-        best_scale = l;
+        best_scale = scales_[k];
       }
     }
 
@@ -207,9 +386,9 @@ std::vector<localized_region> multiscale_localizer::localize(const cv::Mat& back
     found.push_back({box.x, box.y, box.width, box.height, box_score, best_scale});
 
     // Step 6: remove the box from B and recompute the sum where a kernel reaches it. Only
-    // integral rows from the box's top down change.
+    // integral entries below the box's top and right of its left side change.
     work_(box).setTo(0.0f);
-    update_integral(box.y);
+    update_integral(box.y, box.x, box.y + box.height);
     const cv::Rect affected = cv::Rect(box.x - largest, box.y - 3 * largest,
                                        box.width + 2 * largest, box.height + 6 * largest) &
                               image;

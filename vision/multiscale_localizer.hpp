@@ -93,10 +93,11 @@ class multiscale_localizer {
   const std::vector<cv::Mat>& responses() const;
 
  private:
-  void update_integral(int first_row);
+  void update_integral(int first_row, int first_col, int last_row);
   void compute_sum(const cv::Rect& area);
+  cv::Point peak_of_sum();
   const double* row(int y) const;
-  void compute_response(int l, const cv::Rect& area, cv::Mat& out) const;
+  void compute_response(int l, const cv::Rect& area, float* out) const;
 
   localizer_settings settings_;
   std::vector<int> scales_;
@@ -109,8 +110,11 @@ class multiscale_localizer {
   cv::Mat prefix_;
   // Filled by responses() on demand.
   mutable std::vector<cv::Mat> responses_;
+  // sum_l B_l (step 2), and the maximum of each of its rows.
   cv::Mat sum_;
-  cv::Mat scratch_;
+  std::vector<float> row_max_;
+  // Steps 3 and 4: B_l over its kernel domain for every l, one after the other.
+  std::vector<float> domain_responses_;
 };
 
 /// Swain and Ballard's single-scale localisation [45] with the (6l + 1) x (2l + 1) kernel of
