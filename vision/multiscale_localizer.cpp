@@ -18,6 +18,9 @@
 namespace argus::vision {
 namespace {
 
+// The summed response is computed in tiles of this many pixels (step 2).
+constexpr int tile_width = 32;
+constexpr int tile_height = 16;
 // Below this, the summed response counts as empty (rounding residue of the integral image).
 constexpr double empty_response = 1e-6;
 // Marks points of the summed response inside an accepted box (B >= 0, so sums are >= 0).
@@ -203,13 +206,14 @@ multiscale_localizer::multiscale_localizer(localizer_settings settings)
 // update of step 6 gives bit-identical sums to a full recomputation: a box zeroed in work_
 // changes the running sums P only in its own rows, from its left column on, and I only
 // below its top row and right of its left column.
-void multiscale_localizer::update_integral(int first_row, int first_col, int last_row) {
+void multiscale_localizer::update_integral(cv::Mat& integral, int first_row, int first_col,
+                                           int last_row) {
   const int width = work_.cols;
   const int height = work_.rows;
   const int cols = width + 2 * pad_x_ + 1;
   if (first_row == 0 && first_col == 0) {
-    integral_.create(height + 1, cols, CV_64F);
-    std::fill_n(integral_.ptr<double>(0), cols, 0.0);
+    integral.create(height + 1, cols, CV_64F);
+    std::fill_n(integral.ptr<double>(0), cols, 0.0);
     prefix_.create(height, width, CV_64F);
   }
   // Pass 1: each row's running sums, four rows at a time so that their add chains overlap.
@@ -235,8 +239,8 @@ void multiscale_localizer::update_integral(int first_row, int first_col, int las
   // Pass 2: I(y + 1, x + 1) = I(y, x + 1) + running sum, for every row from first_row on.
   for (y = first_row; y < height; ++y) {
     const double* __restrict sums = prefix_.ptr<double>(y);
-    const double* __restrict above = integral_.ptr<double>(y) + pad_x_ + 1;
-    double* __restrict out = integral_.ptr<double>(y + 1);
+    const double* __restrict above = integral.ptr<double>(y) + pad_x_ + 1;
+    double* __restrict out = integral.ptr<double>(y + 1);
     if (first_col == 0) std::fill_n(out, pad_x_ + 1, 0.0);
     out += pad_x_ + 1;
     for (int x = first_col; x < width; ++x) out[x] = above[x] + sums[x];
@@ -244,16 +248,18 @@ void multiscale_localizer::update_integral(int first_row, int first_col, int las
   }
 }
 
-const double* multiscale_localizer::row(int y) const {
-  return integral_.ptr<double>(std::clamp(y, 0, integral_.rows - 1)) + pad_x_;
+// Row y of the integral image after `version` removals, at column 0 of B.
+const double* multiscale_localizer::row(std::size_t version, int y) const {
+  const cv::Mat& integral = integrals_[version];
+  return integral.ptr<double>(std::clamp(y, 0, integral.rows - 1)) + pad_x_;
 }
 
 // Fig. 9, steps 1 and 2 for the pixels in `area`: sum_l B_l(x, y), each B_l(x, y) a box sum
-// over the integral image (four look-ups), rounded to float and added in scale order. The
-// B_l themselves are not stored: steps 3 and 4 need them only near the peak. This loop is
-// most of the localiser's time; sum_row() runs it with the widest vectors the CPU has, with
-// the same operations, hence the same results. Also refreshes the row maxima of the area.
-void multiscale_localizer::compute_sum(const cv::Rect& area) {
+// over the integral image after `version` removals (four look-ups), rounded to float and
+// added in scale order. The B_l themselves are not stored: steps 3 and 4 need them only near
+// the peak. sum_row() runs this with the widest vectors the CPU has, with the same
+// operations, hence the same results.
+void multiscale_localizer::compute_sum(std::size_t version, const cv::Rect& area) {
   std::array<box_rows, 64> small;
   std::vector<box_rows> large;
   box_rows* rows = small.data();
@@ -265,31 +271,115 @@ void multiscale_localizer::compute_sum(const cv::Rect& area) {
   for (int y = area.y; y < area.y + area.height; ++y) {
     for (int k = 0; k < count; ++k) {
       const int l = scales_[k];
-      rows[k] = corners(row(y - 3 * l) + area.x, row(y + 3 * l + 1) + area.x, l);
+      rows[k] = corners(row(version, y - 3 * l) + area.x, row(version, y + 3 * l + 1) + area.x, l);
     }
     sum_row(rows, count, area.width, sum_.ptr<float>(y) + area.x);
   }
 }
 
-// Step 2: the first maximum of sum_ in row-major order (as cv::minMaxLoc finds it), from the
-// maxima of the rows.
-cv::Point multiscale_localizer::peak_of_sum() {
-  const int height = sum_.rows;
+// The sum over one tile as the procedure of Fig. 9 would hold it now: every point from the
+// integral image of the last removal whose kernels reached it (step 6 recomputes the sum
+// there and nowhere else), and -1 inside the accepted boxes.
+void multiscale_localizer::compute_tile(std::size_t tile,
+                                        const std::vector<localized_region>& found) {
+  const cv::Rect image(0, 0, sum_.cols, sum_.rows);
+  const int tx = static_cast<int>(tile) % tiles_x_;
+  const int ty = static_cast<int>(tile) / tiles_x_;
+  const cv::Rect area =
+      cv::Rect(tx * tile_width, ty * tile_height, tile_width, tile_height) & image;
+  compute_sum(0, area);
+  for (std::size_t m = 0; m < removals_; ++m) {
+    const cv::Rect again = area & affected_[m];
+    if (!again.empty()) compute_sum(m + 1, again);
+  }
+  for (const auto& region : found) {
+    const cv::Rect inside = area & region.box();
+    if (!inside.empty()) sum_(inside).setTo(suppressed);
+  }
+  float best = -std::numeric_limits<float>::infinity();
+  for (int y = area.y; y < area.y + area.height; ++y)
+    best = std::max(best, max_of(sum_.ptr<float>(y) + area.x, area.width));
+  tile_max_[tile] = best;
+  tile_done_[tile] = 1;
+}
+
+// An upper bound of sum_l B_l over each tile with B >= 0: B_l at any point of the tile is
+// at most the sum of B over the tile widened by the kernel, l columns and 3l rows each side.
+// Computed from the latest integral image, whose B is the smallest (removals only zero B)
+// but gives the same box sums wherever no removal reached. The margin covers rounding: each
+// integral entry sums at most width + height rounded terms no larger than the total of B
+// (M, largest before any removal), a box sum adds three more, the float conversions and
+// additions over n scales stay within n + 2 float roundings of the sum; both the bound and
+// the sums carry these errors (unit roundoff 2^-53, taken twice to spare).
+void multiscale_localizer::bound_tiles() {
   const int width = sum_.cols;
-  row_max_.resize(height);
-  for (int y = 0; y < height; ++y) row_max_[y] = max_of(sum_.ptr<float>(y), width);
-  const float best = max_of(row_max_.data(), height);
-  const int y =
-      static_cast<int>(std::find(row_max_.begin(), row_max_.end(), best) - row_max_.begin());
-  const float* values = sum_.ptr<float>(y);
-  return {static_cast<int>(std::find(values, values + width, best) - values), y};
+  const int height = sum_.rows;
+  const double n = static_cast<double>(scales_.size()) + 2.0;
+  const double total = std::max(0.0, row(0, height)[width]);
+  const double margin_abs = 2.0 * n * (4.0 * (width + height) + 16.0) * 0x1p-52 * total;
+  const double margin_rel = n * 0x1p-22;
+  for (int ty = 0; ty < tiles_y_; ++ty)
+    for (int tx = 0; tx < tiles_x_; ++tx) {
+      const int x0 = tx * tile_width;
+      const int y0 = ty * tile_height;
+      const int x1 = std::min(x0 + tile_width, width);
+      const int y1 = std::min(y0 + tile_height, height);
+      double bound = 0.0;
+      for (const int l : scales_) {
+        const double* top = row(removals_, y0 - 3 * l);
+        const double* bottom = row(removals_, y1 + 3 * l);
+        bound += (bottom[x1 + l] - bottom[x0 - l]) - (top[x1 + l] - top[x0 - l]);
+      }
+      tile_bound_[ty * tiles_x_ + tx] = bound + std::abs(bound) * margin_rel + margin_abs;
+    }
+}
+
+// Step 2: the first maximum of the sum in row-major order (as cv::minMaxLoc finds it).
+// Tiles are computed in decreasing order of their bounds until a bound is below the largest
+// value found: no point left out can then reach it, let alone equal it.
+cv::Point multiscale_localizer::find_peak(const std::vector<localized_region>& found, float& best) {
+  const std::size_t tiles = tile_done_.size();
+  best = -std::numeric_limits<float>::infinity();
+  for (std::size_t t = 0; t < tiles; ++t)
+    if (tile_done_[t] != 0) best = std::max(best, tile_max_[t]);
+  if (bounded_) {
+    bound_tiles();
+    std::sort(tile_order_.begin(), tile_order_.end(),
+              [this](int a, int b) { return tile_bound_[a] > tile_bound_[b]; });
+  }
+  for (const int t : tile_order_) {
+    if (bounded_ && (tile_bound_[t] < best || tile_bound_[t] <= empty_response)) break;
+    if (tile_done_[t] != 0) continue;
+    compute_tile(static_cast<std::size_t>(t), found);
+    best = std::max(best, tile_max_[t]);
+  }
+  // The first point equal to the maximum, in the computed tiles (every other one is lower).
+  for (int ty = 0; ty < tiles_y_; ++ty) {
+    bool band = false;
+    for (int tx = 0; tx < tiles_x_; ++tx) {
+      const std::size_t t = static_cast<std::size_t>(ty * tiles_x_ + tx);
+      band = band || (tile_done_[t] != 0 && tile_max_[t] == best);
+    }
+    if (!band) continue;
+    for (int y = ty * tile_height; y < std::min((ty + 1) * tile_height, sum_.rows); ++y)
+      for (int tx = 0; tx < tiles_x_; ++tx) {
+        const std::size_t t = static_cast<std::size_t>(ty * tiles_x_ + tx);
+        if (tile_done_[t] == 0 || tile_max_[t] != best) continue;
+        const float* values = sum_.ptr<float>(y);
+        const int end = std::min((tx + 1) * tile_width, sum_.cols);
+        for (int x = tx * tile_width; x < end; ++x)
+          if (values[x] == best) return {x, y};
+      }
+  }
+  return {0, 0};  // no tile computed: best is -inf
 }
 
 // B_l over `area` into `out` (area.width x area.height, row-major), as compute_sum()
 // evaluates it.
 void multiscale_localizer::compute_response(int l, const cv::Rect& area, float* out) const {
   for (int y = area.y; y < area.y + area.height; ++y, out += area.width) {
-    const box_rows rows = corners(row(y - 3 * l) + area.x, row(y + 3 * l + 1) + area.x, l);
+    const box_rows rows =
+        corners(row(removals_, y - 3 * l) + area.x, row(removals_, y + 3 * l + 1) + area.x, l);
     sum_row(&rows, 1, area.width, out);
   }
 }
@@ -311,20 +401,40 @@ std::vector<localized_region> multiscale_localizer::localize(const cv::Mat& back
   CV_Assert(backprojection.type() == CV_32F);
   std::vector<localized_region> found;
   responses_.clear();
+  removals_ = 0;
+  affected_.clear();
   const int width = backprojection.cols;
   const int height = backprojection.rows;
   backprojection.copyTo(work_);
-  if (width == 0 || height == 0) return found;
+  if (width == 0 || height == 0) {
+    integrals_.resize(1);
+    integrals_[0].release();
+    return found;
+  }
   scales_ = settings_.scales.empty() ? paper_scales(height) : settings_.scales;
   const int largest = *std::max_element(scales_.begin(), scales_.end());
   CV_Assert(*std::min_element(scales_.begin(), scales_.end()) >= 0);
   pad_x_ = largest + 1;
   const cv::Rect image(0, 0, width, height);
-  update_integral(0, 0, height);
+  if (integrals_.empty()) integrals_.resize(1);
+  update_integral(integrals_[0], 0, 0, height);
   sum_.create(height, width, CV_32F);
 
-  // Step 1 (all of the image) and the sum for step 2.
-  compute_sum(image);
+  // Step 1 runs tile by tile, where step 2 needs it. The bounds hold for B >= 0 (a
+  // backprojection); with negative values (or NaN) every tile is computed.
+  bounded_ = true;
+  for (int y = 0; y < height && bounded_; ++y) {
+    const float* values = work_.ptr<float>(y);
+    for (int x = 0; x < width; ++x) bounded_ = bounded_ && values[x] >= 0.0f;
+  }
+  tiles_x_ = (width + tile_width - 1) / tile_width;
+  tiles_y_ = (height + tile_height - 1) / tile_height;
+  const std::size_t tiles = static_cast<std::size_t>(tiles_x_) * tiles_y_;
+  tile_bound_.assign(tiles, 0.0);
+  tile_max_.assign(tiles, 0.0f);
+  tile_done_.assign(tiles, 0);
+  tile_order_.resize(tiles);
+  for (std::size_t t = 0; t < tiles; ++t) tile_order_[t] = static_cast<int>(t);
 
   const std::size_t scale_count = scales_.size();
   std::vector<cv::Rect> domains(scale_count);
@@ -333,8 +443,8 @@ std::vector<localized_region> multiscale_localizer::localize(const cv::Mat& back
   std::vector<std::size_t> order(scale_count);
   while (static_cast<int>(found.size()) < settings_.max_regions) {
     // Step 2: the peak of the summed response.
-    const cv::Point centre = peak_of_sum();
-    const double best = sum_.at<float>(centre);
+    float best = 0.0f;
+    const cv::Point centre = find_peak(found, best);
     if (best <= empty_response) break;
 
     // Step 3: per scale, B_l over the kernel domain and its peak.
@@ -385,15 +495,21 @@ std::vector<localized_region> multiscale_localizer::localize(const cv::Mat& back
     if (!(box_score > settings_.rho)) break;
     found.push_back({box.x, box.y, box.width, box.height, box_score, best_scale});
 
-    // Step 6: remove the box from B and recompute the sum where a kernel reaches it. Only
-    // integral entries below the box's top and right of its left side change.
+    // Step 6: remove the box from B; the sum changes where a kernel reaches it. Only integral
+    // entries below the box's top and right of its left side change. The tiles there are
+    // computed again when step 2 needs them.
     work_(box).setTo(0.0f);
-    update_integral(box.y, box.x, box.y + box.height);
+    ++removals_;
+    if (integrals_.size() <= removals_) integrals_.emplace_back();
+    integrals_[removals_ - 1].copyTo(integrals_[removals_]);
+    update_integral(integrals_[removals_], box.y, box.x, box.y + box.height);
     const cv::Rect affected = cv::Rect(box.x - largest, box.y - 3 * largest,
                                        box.width + 2 * largest, box.height + 6 * largest) &
                               image;
-    compute_sum(affected);
-    for (const auto& region : found) sum_(region.box()).setTo(suppressed);
+    affected_.push_back(affected);
+    for (int ty = affected.y / tile_height; ty <= (affected.br().y - 1) / tile_height; ++ty)
+      for (int tx = affected.x / tile_width; tx <= (affected.br().x - 1) / tile_width; ++tx)
+        tile_done_[static_cast<std::size_t>(ty * tiles_x_ + tx)] = 0;
   }
   return found;
 }

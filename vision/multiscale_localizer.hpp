@@ -10,6 +10,7 @@
 // and the columns x - l .. x + l around its centre (x, y). The image is extended with zero
 // borders, as in Fig. 8.
 
+#include <cstdint>
 #include <functional>
 #include <vector>
 
@@ -93,10 +94,12 @@ class multiscale_localizer {
   const std::vector<cv::Mat>& responses() const;
 
  private:
-  void update_integral(int first_row, int first_col, int last_row);
-  void compute_sum(const cv::Rect& area);
-  cv::Point peak_of_sum();
-  const double* row(int y) const;
+  void update_integral(cv::Mat& integral, int first_row, int first_col, int last_row);
+  const double* row(std::size_t version, int y) const;
+  void compute_sum(std::size_t version, const cv::Rect& area);
+  void compute_tile(std::size_t tile, const std::vector<localized_region>& found);
+  void bound_tiles();
+  cv::Point find_peak(const std::vector<localized_region>& found, float& best);
   void compute_response(int l, const cv::Rect& area, float* out) const;
 
   localizer_settings settings_;
@@ -104,15 +107,28 @@ class multiscale_localizer {
   int pad_x_ = 0;
   // B with the accepted boxes zeroed (step 6).
   cv::Mat work_;
-  // Integral image of work_ between zero borders of pad_x_ columns.
-  cv::Mat integral_;
+  // integrals_[m]: the integral image of work_ after m removals, between zero borders of
+  // pad_x_ columns. Earlier ones are kept: a point's sum is the one from the integral image of
+  // the last removal whose kernels reached it.
+  std::vector<cv::Mat> integrals_;
+  std::size_t removals_ = 0;
   // Running sums along each row of work_, a step of the integral image.
   cv::Mat prefix_;
   // Filled by responses() on demand.
   mutable std::vector<cv::Mat> responses_;
-  // sum_l B_l (step 2), and the maximum of each of its rows.
+  // sum_l B_l (step 2), valid in the tiles computed so far.
   cv::Mat sum_;
-  std::vector<float> row_max_;
+  // Per removal m + 1, the points whose kernels reach the removed box.
+  std::vector<cv::Rect> affected_;
+  // Tiles of the summed response: an upper bound of the sum in each, whether it is computed
+  // and then its maximum. A tile is computed only if its bound reaches the peak.
+  int tiles_x_ = 0;
+  int tiles_y_ = 0;
+  bool bounded_ = false;
+  std::vector<double> tile_bound_;
+  std::vector<float> tile_max_;
+  std::vector<std::uint8_t> tile_done_;
+  std::vector<int> tile_order_;
   // Steps 3 and 4: B_l over its kernel domain for every l, one after the other.
   std::vector<float> domain_responses_;
 };
