@@ -157,6 +157,51 @@ float max_of(const float* values, int count) {
   return best;
 }
 
+// out[x] = above[x] + sums[x]: a row of the integral image (one add each, the same bits in
+// every variant).
+#ifdef ARGUS_LOCALIZER_X86
+__attribute__((target_clones("avx512f", "avx2", "default")))
+#endif
+void add_rows(const double* __restrict above, const double* __restrict sums,
+              double* __restrict out, int count) {
+  for (int x = 0; x < count; ++x) out[x] = above[x] + sums[x];
+}
+
+// One sum of step 4: sum_i (peak - values[i])^2 over `size` values, in order.
+struct chain {
+  const float* values;
+  std::size_t size;
+  double peak;
+  double squares;
+};
+
+// Advances N chains over [begin, end) in lockstep, the sums in registers.
+template <std::size_t N>
+void advance(chain* chains, std::size_t begin, std::size_t end) {
+  double sums[N];
+  for (std::size_t c = 0; c < N; ++c) sums[c] = chains[c].squares;
+  for (std::size_t i = begin; i < end; ++i)
+    for (std::size_t c = 0; c < N; ++c) {
+      const double d = chains[c].peak - chains[c].values[i];
+      sums[c] += d * d;
+    }
+  for (std::size_t c = 0; c < N; ++c) chains[c].squares = sums[c];
+}
+
+// Completes up to four chains sorted by decreasing size: all together up to the shortest,
+// then the rest, and so on.
+void advance_chains(chain* chains, std::size_t count) {
+  std::size_t done = 0;
+  for (std::size_t n = count; n > 0; --n) {
+    const std::size_t end = chains[n - 1].size;
+    if (n == 4) advance<4>(chains, done, end);
+    if (n == 3) advance<3>(chains, done, end);
+    if (n == 2) advance<2>(chains, done, end);
+    if (n == 1) advance<1>(chains, done, end);
+    done = std::max(done, end);
+  }
+}
+
 }  // namespace
 
 region_scorer histogram_scorer(const cv::Mat& bin_indices, const color_histogram& target) {
@@ -206,29 +251,35 @@ multiscale_localizer::multiscale_localizer(localizer_settings settings)
 // update of step 6 gives bit-identical sums to a full recomputation: a box zeroed in work_
 // changes the running sums P only in its own rows, from its left column on, and I only
 // below its top row and right of its left column.
-void multiscale_localizer::update_integral(cv::Mat& integral, int first_row, int first_col,
-                                           int last_row) {
+void multiscale_localizer::update_integral(cv::Mat& integral, const cv::Mat* previous,
+                                           int first_row, int first_col, int last_row) {
   const int width = work_.cols;
   const int height = work_.rows;
   const int cols = width + 2 * pad_x_ + 1;
-  if (first_row == 0 && first_col == 0) {
-    integral.create(height + 1, cols, CV_64F);
+  integral.create(height + 1, cols, CV_64F);
+  if (previous == nullptr) {
     std::fill_n(integral.ptr<double>(0), cols, 0.0);
     prefix_.create(height, width, CV_64F);
+  } else {
+    // What the removal leaves: the rows down to first_row, and left of first_col below.
+    std::copy_n(previous->ptr<double>(0), static_cast<std::size_t>(first_row + 1) * cols,
+                integral.ptr<double>(0));
+    for (int y = first_row + 1; y <= height; ++y)
+      std::copy_n(previous->ptr<double>(y), pad_x_ + 1 + first_col, integral.ptr<double>(y));
   }
-  // Pass 1: each row's running sums, four rows at a time so that their add chains overlap.
+  // Pass 1: each row's running sums, eight rows at a time so that their add chains overlap.
   int y = first_row;
-  for (; y + 4 <= last_row; y += 4) {
-    const float* in[4];
-    double* out[4];
-    double row_sum[4];
-    for (int r = 0; r < 4; ++r) {
+  for (; y + 8 <= last_row; y += 8) {
+    const float* in[8];
+    double* out[8];
+    double row_sum[8];
+    for (int r = 0; r < 8; ++r) {
       in[r] = work_.ptr<float>(y + r);
       out[r] = prefix_.ptr<double>(y + r);
       row_sum[r] = first_col > 0 ? out[r][first_col - 1] : 0.0;
     }
     for (int x = first_col; x < width; ++x)
-      for (int r = 0; r < 4; ++r) out[r][x] = row_sum[r] += in[r][x];
+      for (int r = 0; r < 8; ++r) out[r][x] = row_sum[r] += in[r][x];
   }
   for (; y < last_row; ++y) {
     const float* in = work_.ptr<float>(y);
@@ -238,12 +289,12 @@ void multiscale_localizer::update_integral(cv::Mat& integral, int first_row, int
   }
   // Pass 2: I(y + 1, x + 1) = I(y, x + 1) + running sum, for every row from first_row on.
   for (y = first_row; y < height; ++y) {
-    const double* __restrict sums = prefix_.ptr<double>(y);
-    const double* __restrict above = integral.ptr<double>(y) + pad_x_ + 1;
-    double* __restrict out = integral.ptr<double>(y + 1);
+    const double* sums = prefix_.ptr<double>(y);
+    const double* above = integral.ptr<double>(y) + pad_x_ + 1;
+    double* out = integral.ptr<double>(y + 1);
     if (first_col == 0) std::fill_n(out, pad_x_ + 1, 0.0);
     out += pad_x_ + 1;
-    for (int x = first_col; x < width; ++x) out[x] = above[x] + sums[x];
+    add_rows(above + first_col, sums + first_col, out + first_col, width - first_col);
     std::fill_n(out + width, pad_x_, out[width - 1]);
   }
 }
@@ -417,7 +468,7 @@ std::vector<localized_region> multiscale_localizer::localize(const cv::Mat& back
   pad_x_ = largest + 1;
   const cv::Rect image(0, 0, width, height);
   if (integrals_.empty()) integrals_.resize(1);
-  update_integral(integrals_[0], 0, 0, height);
+  update_integral(integrals_[0], nullptr, 0, 0, height);
   sum_.create(height, width, CV_32F);
 
   // Step 1 runs tile by tile, where step 2 needs it. The bounds hold for B >= 0 (a
@@ -425,7 +476,9 @@ std::vector<localized_region> multiscale_localizer::localize(const cv::Mat& back
   bounded_ = true;
   for (int y = 0; y < height && bounded_; ++y) {
     const float* values = work_.ptr<float>(y);
-    for (int x = 0; x < width; ++x) bounded_ = bounded_ && values[x] >= 0.0f;
+    int negative = 0;
+    for (int x = 0; x < width; ++x) negative |= !(values[x] >= 0.0f) ? 1 : 0;
+    bounded_ = negative == 0;
   }
   tiles_x_ = (width + tile_width - 1) / tile_width;
   tiles_y_ = (height + tile_height - 1) / tile_height;
@@ -458,26 +511,24 @@ std::vector<localized_region> multiscale_localizer::localize(const cv::Mat& back
       float* response = domain_responses_.data() + offsets[k];
       compute_response(scales_[k], domains[k], response);
       peaks[k] = max_of(response, domains[k].area());
-      squares[k] = 0.0;
     }
     // Step 4: sum_K (peak - B_l)^2 per scale, each over its domain in row-major order. The
-    // scales' sums are independent chains of dependent adds; they advance together (the
-    // shortest leaving first) so that the adds overlap, each still in its own order.
+    // scales' sums are independent chains of dependent adds: they advance four at a time,
+    // longest first, so that the adds overlap, each still in its own order.
     for (std::size_t k = 0; k < scale_count; ++k) order[k] = k;
     std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-      return offsets[a + 1] - offsets[a] < offsets[b + 1] - offsets[b];
+      return offsets[a + 1] - offsets[a] > offsets[b + 1] - offsets[b];
     });
-    std::size_t done = 0;
-    for (std::size_t first = 0; first < scale_count; ++first) {
-      const std::size_t k0 = order[first];
-      const std::size_t end = offsets[k0 + 1] - offsets[k0];
-      for (std::size_t i = done; i < end; ++i)
-        for (std::size_t c = first; c < scale_count; ++c) {
-          const std::size_t k = order[c];
-          const double d = peaks[k] - domain_responses_[offsets[k] + i];
-          squares[k] += d * d;
-        }
-      done = end;
+    for (std::size_t group = 0; group < scale_count; group += 4) {
+      const std::size_t n = std::min<std::size_t>(4, scale_count - group);
+      chain chains[4];
+      for (std::size_t c = 0; c < n; ++c) {
+        const std::size_t k = order[group + c];
+        chains[c] = {domain_responses_.data() + offsets[k], offsets[k + 1] - offsets[k], peaks[k],
+                     0.0};
+      }
+      advance_chains(chains, n);
+      for (std::size_t c = 0; c < n; ++c) squares[order[group + c]] = chains[c].squares;
     }
     int best_scale = scales_.front();
     double best_sharpness = -1.0;
@@ -501,8 +552,8 @@ std::vector<localized_region> multiscale_localizer::localize(const cv::Mat& back
     work_(box).setTo(0.0f);
     ++removals_;
     if (integrals_.size() <= removals_) integrals_.emplace_back();
-    integrals_[removals_ - 1].copyTo(integrals_[removals_]);
-    update_integral(integrals_[removals_], box.y, box.x, box.y + box.height);
+    update_integral(integrals_[removals_], &integrals_[removals_ - 1], box.y, box.x,
+                    box.y + box.height);
     const cv::Rect affected = cv::Rect(box.x - largest, box.y - 3 * largest,
                                        box.width + 2 * largest, box.height + 6 * largest) &
                               image;

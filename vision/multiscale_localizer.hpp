@@ -94,7 +94,8 @@ class multiscale_localizer {
   const std::vector<cv::Mat>& responses() const;
 
  private:
-  void update_integral(cv::Mat& integral, int first_row, int first_col, int last_row);
+  void update_integral(cv::Mat& integral, const cv::Mat* previous, int first_row, int first_col,
+                       int last_row);
   const double* row(std::size_t version, int y) const;
   void compute_sum(std::size_t version, const cv::Rect& area);
   void compute_tile(std::size_t tile, const std::vector<localized_region>& found);
