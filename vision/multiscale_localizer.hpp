@@ -126,6 +126,8 @@ class multiscale_localizer {
   int tiles_x_ = 0;
   int tiles_y_ = 0;
   bool bounded_ = false;
+  // Whether all sums of the integral image are exact (see localize()).
+  bool exact_ = false;
   std::vector<double> tile_bound_;
   std::vector<float> tile_max_;
   std::vector<std::uint8_t> tile_done_;

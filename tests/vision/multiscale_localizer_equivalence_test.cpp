@@ -189,7 +189,8 @@ TEST(multiscale_localizer_equivalence, colour_scenes_match_the_reference) {
 }
 
 // Synthetic backprojections with many exact ties (values in steps of 1/4, flat rectangles),
-// odd sizes, hand-picked scale sets (l = 0 included) and the single-scale baseline.
+// some with negative values, odd sizes, hand-picked scale sets (l = 0 included) and the
+// single-scale baseline.
 TEST(multiscale_localizer_equivalence, synthetic_backprojections_match_the_reference) {
   std::mt19937 rng(99);
   std::size_t regions = 0;
@@ -209,6 +210,7 @@ TEST(multiscale_localizer_equivalence, synthetic_backprojections_match_the_refer
       b(cv::Rect(x(rng), y(rng), w(rng), 3 * w(rng)) & cv::Rect({}, size))
           .setTo(quarter(rng) / 4.0f);
     }
+    if (scene % 4 == 3) b -= 0.1f;  // negative values too (as in a noisy B, Fig. 9 (b))
     std::vector<int> scales;
     if (scene % 5 == 1) scales = {0, 1, 2};
     if (scene % 5 == 2) scales = {std::uniform_int_distribution<int>(0, 9)(rng)};
