@@ -143,18 +143,70 @@ sum_row_function pick_sum_row() {
 
 const sum_row_function sum_row = pick_sum_row();
 
-// The largest of `values` (exact in any order; no NaN here). Sixteen lanes so that the
-// compiler keeps them in one vector register.
+// The largest of `values` (exact in any order; no NaN here).
 float max_of(const float* values, int count) {
-  float lanes[16];
-  std::fill_n(lanes, 16, -std::numeric_limits<float>::infinity());
-  int x = 0;
-  for (; x + 16 <= count; x += 16)
-    for (int i = 0; i < 16; ++i) lanes[i] = values[x + i] > lanes[i] ? values[x + i] : lanes[i];
   float best = -std::numeric_limits<float>::infinity();
+  int x = 0;
+#ifdef ARGUS_LOCALIZER_X86
+  __m128 lanes[4];
+  for (auto& lane : lanes) lane = _mm_set1_ps(best);
+  for (; x + 16 <= count; x += 16)
+    for (int i = 0; i < 4; ++i) lanes[i] = _mm_max_ps(_mm_loadu_ps(values + x + 4 * i), lanes[i]);
+  alignas(16) float reduced[16];
+  for (int i = 0; i < 4; ++i) _mm_store_ps(reduced + 4 * i, lanes[i]);
+  for (const float v : reduced) best = v > best ? v : best;
+#endif
   for (; x < count; ++x) best = values[x] > best ? values[x] : best;
-  for (int i = 0; i < 16; ++i) best = lanes[i] > best ? lanes[i] : best;
   return best;
+}
+
+// What localize() needs to know of B: whether every value is >= 0 (no NaN), the smallest
+// positive value (infinity if none) and the largest value (0 if none is larger).
+struct value_range {
+  bool nonnegative = true;
+  float smallest_positive = std::numeric_limits<float>::infinity();
+  float largest = 0.0f;
+};
+
+value_range range_of(const cv::Mat& values) {
+  value_range range;
+  const float infinity = std::numeric_limits<float>::infinity();
+  for (int y = 0; y < values.rows; ++y) {
+    const float* row = values.ptr<float>(y);
+    int x = 0;
+#ifdef ARGUS_LOCALIZER_X86
+    const __m128 zero = _mm_setzero_ps();
+    const __m128 inf = _mm_set1_ps(infinity);
+    __m128 negative = zero;
+    __m128 smallest = _mm_set1_ps(range.smallest_positive);
+    __m128 largest = _mm_set1_ps(range.largest);
+    for (; x + 4 <= values.cols; x += 4) {
+      const __m128 v = _mm_loadu_ps(row + x);
+      negative = _mm_or_ps(negative, _mm_cmpnge_ps(v, zero));
+      const __m128 positive = _mm_cmpgt_ps(v, zero);
+      smallest =
+          _mm_min_ps(_mm_or_ps(_mm_and_ps(positive, v), _mm_andnot_ps(positive, inf)), smallest);
+      largest = _mm_max_ps(v, largest);
+    }
+    range.nonnegative = range.nonnegative && _mm_movemask_ps(negative) == 0;
+    alignas(16) float lanes[8];
+    _mm_store_ps(lanes, smallest);
+    _mm_store_ps(lanes + 4, largest);
+    for (int i = 0; i < 4; ++i) {
+      range.smallest_positive =
+          lanes[i] < range.smallest_positive ? lanes[i] : range.smallest_positive;
+      range.largest = lanes[4 + i] > range.largest ? lanes[4 + i] : range.largest;
+    }
+#endif
+    for (; x < values.cols; ++x) {
+      const float v = row[x];
+      range.nonnegative = range.nonnegative && v >= 0.0f;
+      if (v > 0.0f && v < range.smallest_positive) range.smallest_positive = v;
+      range.largest = v > range.largest ? v : range.largest;
+    }
+    if (!range.nonnegative) break;
+  }
+  return range;
 }
 
 // out[x] = above[x] + sums[x]: a row of the integral image (one add each, the same bits in
@@ -481,24 +533,11 @@ std::vector<localized_region> multiscale_localizer::localize(const cv::Mat& back
   // integral image and every box sum is exact, so the integral images before and after a
   // removal give the same bits wherever no kernel reaches the removed box; then one integral
   // image is kept and updated in place.
-  bounded_ = true;
-  float smallest = std::numeric_limits<float>::infinity();
-  float highest = 0.0f;
-  for (int y = 0; y < height && bounded_; ++y) {
-    const float* values = work_.ptr<float>(y);
-    int negative = 0;
-    for (int x = 0; x < width; ++x) {
-      const float v = values[x];
-      negative |= !(v >= 0.0f) ? 1 : 0;
-      const float positive = v > 0.0f ? v : std::numeric_limits<float>::infinity();
-      smallest = positive < smallest ? positive : smallest;
-      highest = v > highest ? v : highest;
-    }
-    bounded_ = negative == 0;
-  }
-  exact_ = bounded_ &&
-           (std::isinf(smallest) ||
-            double(width) * height * highest <= std::ldexp(1.0, 53 + std::ilogb(smallest) - 23));
+  const value_range range = range_of(work_);
+  bounded_ = range.nonnegative;
+  exact_ = bounded_ && (std::isinf(range.smallest_positive) ||
+                        double(width) * height * range.largest <=
+                            std::ldexp(1.0, 53 + std::ilogb(range.smallest_positive) - 23));
   tiles_x_ = (width + tile_width - 1) / tile_width;
   tiles_y_ = (height + tile_height - 1) / tile_height;
   const std::size_t tiles = static_cast<std::size_t>(tiles_x_) * tiles_y_;
