@@ -73,7 +73,8 @@ class multiscale_localizer {
   /// repeated until the first rejection (score <= rho), an empty B, or max_regions.
   ///
   /// Step 1: B_l = B * K_l for every l, by box sums over one integral image of B (evaluated
-  ///         where needed: summed over l everywhere, per l only near the peak).
+  ///         where needed: summed over l in the 32 x 16 tiles whose upper bound reaches the
+  ///         peak when B >= 0, in every tile otherwise; per l only near the peak).
   /// Step 2: (x*, y*) = argmax sum_l B_l.
   /// Step 3: per l, the peak (x_l*, y_l*) of B_l inside K_l centred at (x*, y*).
   /// Step 4: l* = argmax_l sum_{K}(B_l(x_l*, y_l*) - B_l(x, y))^2 / |K|, over K clipped to
@@ -84,6 +85,9 @@ class multiscale_localizer {
   ///         steps 1 through 6" re-runs step 1, which only a change to B survives, and it
   ///         also removes the tails a large kernel would keep of the found target. Points
   ///         inside a box already accepted are not chosen again.
+  ///
+  /// The results are those of evaluating every step everywhere, bit for bit (see
+  /// tests/vision/multiscale_localizer_equivalence_test.cpp).
   std::vector<localized_region> localize(const cv::Mat& backprojection, const region_scorer& score);
 
   /// The settings in use.
