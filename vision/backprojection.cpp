@@ -37,9 +37,7 @@ cv::Mat backproject(const cv::Mat& bin_indices, const color_histogram& ratio) {
 backprojection_result backproject_target(const cv::Mat& bgr, const color_histogram& target,
                                          std::optional<double> target_pixels) {
   backprojection_result result;
-  result.bin_indices = bin_index_image(bgr, target.bins());
-  auto image = color_histogram::of_bin_indices(result.bin_indices,
-                                               cv::Rect(0, 0, bgr.cols, bgr.rows), target.bins());
+  const auto image = bin_index_image(bgr, target.bins(), result.bin_indices);
   result.backprojection =
       backproject(result.bin_indices, ratio_histogram(target, image, target_pixels));
   return result;

@@ -30,28 +30,82 @@ std::uint16_t get_u16(const std::uint8_t* p) {
 
 }  // namespace
 
+namespace {
+
+// map(c) as three look-up tables on OpenCV's 8-bit H, S and V whose sum is the bin index.
+struct bin_tables {
+  std::array<std::uint16_t, 256> hue{}, saturation{}, value{};
+
+  explicit bin_tables(const histogram_bins& bins) {
+    for (int i = 0; i < 256; ++i) {
+      int h = std::min(i, 179) * bins.hue / 180;
+      int s = i * bins.saturation / 256;
+      int v = i * bins.value / 256;
+      hue[i] = static_cast<std::uint16_t>(h * bins.saturation * bins.value);
+      saturation[i] = static_cast<std::uint16_t>(s * bins.value);
+      value[i] = static_cast<std::uint16_t>(v);
+    }
+  }
+};
+
+// The HSV image of `bgr` in a buffer kept per thread (no allocation per frame).
+const cv::Mat& hsv_of(const cv::Mat& bgr) {
+  thread_local cv::Mat hsv;
+  cv::cvtColor(bgr, hsv, cv::COLOR_BGR2HSV);
+  return hsv;
+}
+
+}  // namespace
+
 cv::Mat bin_index_image(const cv::Mat& bgr, const histogram_bins& bins) {
   CV_Assert(bgr.type() == CV_8UC3 && valid(bins));
-  cv::Mat hsv;
-  cv::cvtColor(bgr, hsv, cv::COLOR_BGR2HSV);
-  // map(c): per-channel look-up tables whose sum is the bin index.
-  std::array<std::uint16_t, 256> hue_part{}, saturation_part{}, value_part{};
-  for (int i = 0; i < 256; ++i) {
-    int h = std::min(i, 179) * bins.hue / 180;
-    int s = i * bins.saturation / 256;
-    int v = i * bins.value / 256;
-    hue_part[i] = static_cast<std::uint16_t>(h * bins.saturation * bins.value);
-    saturation_part[i] = static_cast<std::uint16_t>(s * bins.value);
-    value_part[i] = static_cast<std::uint16_t>(v);
-  }
+  const cv::Mat& hsv = hsv_of(bgr);
+  const bin_tables map(bins);
   cv::Mat indices(bgr.size(), CV_16U);
   for (int y = 0; y < hsv.rows; ++y) {
     const auto* in = hsv.ptr<std::uint8_t>(y);
     auto* out = indices.ptr<std::uint16_t>(y);
     for (int x = 0; x < hsv.cols; ++x, in += 3)
-      out[x] = hue_part[in[0]] + saturation_part[in[1]] + value_part[in[2]];
+      out[x] = map.hue[in[0]] + map.saturation[in[1]] + map.value[in[2]];
   }
   return indices;
+}
+
+color_histogram bin_index_image(const cv::Mat& bgr, const histogram_bins& bins, cv::Mat& indices) {
+  CV_Assert(bgr.type() == CV_8UC3 && valid(bins));
+  const cv::Mat& hsv = hsv_of(bgr);
+  const bin_tables map(bins);
+  indices.create(bgr.size(), CV_16U);
+  // Eight integer sub-histograms, so that runs of one colour do not wait on one counter;
+  // integer counts below 2^24 convert to float exactly, as of_bin_indices() counts.
+  const std::size_t n = static_cast<std::size_t>(bins.count());
+  thread_local std::vector<std::uint32_t> parts;
+  parts.assign(8 * n, 0);
+  for (int y = 0; y < hsv.rows; ++y) {
+    const auto* in = hsv.ptr<std::uint8_t>(y);
+    auto* out = indices.ptr<std::uint16_t>(y);
+    int x = 0;
+    for (; x + 8 <= hsv.cols; x += 8, in += 24)
+      for (int k = 0; k < 8; ++k) {
+        const std::uint16_t i =
+            map.hue[in[3 * k]] + map.saturation[in[3 * k + 1]] + map.value[in[3 * k + 2]];
+        out[x + k] = i;
+        ++parts[k * n + i];
+      }
+    for (; x < hsv.cols; ++x, in += 3) {
+      const std::uint16_t i = map.hue[in[0]] + map.saturation[in[1]] + map.value[in[2]];
+      out[x] = i;
+      ++parts[i];
+    }
+  }
+  color_histogram result(bins);
+  auto counts = result.counts();
+  for (std::size_t i = 0; i < n; ++i) {
+    std::uint32_t sum = 0;
+    for (std::size_t k = 0; k < 8; ++k) sum += parts[k * n + i];
+    counts[i] = static_cast<float>(sum);
+  }
+  return result;
 }
 
 color_histogram::color_histogram() : color_histogram(histogram_bins{}) {

@@ -95,4 +95,8 @@ double intersection(const color_histogram& target, const color_histogram& candid
 /// region (Fig. 9, step 5), since under zoom the region and the target differ in pixel count.
 double normalized_intersection(const color_histogram& target, const color_histogram& candidate);
 
+/// bin_index_image() into `indices` (its buffer reused when it fits), returning in the same
+/// pass the histogram of the whole image (equal to color_histogram::of_bin_indices() on it).
+color_histogram bin_index_image(const cv::Mat& bgr, const histogram_bins& bins, cv::Mat& indices);
+
 }  // namespace argus::vision

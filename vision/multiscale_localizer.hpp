@@ -10,6 +10,7 @@
 // and the columns x - l .. x + l around its centre (x, y). The image is extended with zero
 // borders, as in Fig. 8.
 
+#include <cstdint>
 #include <functional>
 #include <vector>
 
@@ -75,7 +76,8 @@ class multiscale_localizer {
   /// repeated until the first rejection (score <= rho), an empty B, or max_regions.
   ///
   /// Step 1: B_l = B * K_l for every l, by box sums over one integral image of B (evaluated
-  ///         where needed: summed over l everywhere, per l only near the peak).
+  ///         where needed: summed over l in the 32 x 16 tiles whose upper bound reaches the
+  ///         peak when B >= 0, in every tile otherwise; per l only near the peak).
   /// Step 2: (x*, y*) = argmax sum_l B_l.
   /// Step 3: per l, the peak (x_l*, y_l*) of B_l inside K_l centred at (x*, y*).
   /// Step 4: l* = argmax_l sum_{K}(B_l(x_l*, y_l*) - B_l(x, y))^2 / |K|, over K clipped to
@@ -86,6 +88,9 @@ class multiscale_localizer {
   ///         steps 1 through 6" re-runs step 1, which only a change to B survives, and it
   ///         also removes the tails a large kernel would keep of the found target. Points
   ///         inside a box already accepted are not chosen again.
+  ///
+  /// The results are those of evaluating every step everywhere, bit for bit (see
+  /// tests/vision/multiscale_localizer_equivalence_test.cpp).
   std::vector<localized_region> localize(const cv::Mat& backprojection, const region_scorer& score);
 
   /// The settings in use.
@@ -96,24 +101,46 @@ class multiscale_localizer {
   const std::vector<cv::Mat>& responses() const;
 
  private:
-  void update_integral(int first_row);
-  void compute_sum(const cv::Rect& area);
-  const double* row(int y) const;
-  void compute_response(int l, const cv::Rect& area, cv::Mat& out) const;
+  void update_integral(cv::Mat& integral, const cv::Mat* previous, int first_row, int first_col,
+                       int last_row);
+  const double* row(std::size_t version, int y) const;
+  void compute_sum(std::size_t version, const cv::Rect& area);
+  void compute_tile(std::size_t tile, const std::vector<localized_region>& found);
+  void bound_tiles();
+  cv::Point find_peak(const std::vector<localized_region>& found, float& best);
+  void compute_response(int l, const cv::Rect& area, float* out) const;
 
   localizer_settings settings_;
   std::vector<int> scales_;
   int pad_x_ = 0;
   // B with the accepted boxes zeroed (step 6).
   cv::Mat work_;
-  // Integral image of work_ between zero borders of pad_x_ columns.
-  cv::Mat integral_;
+  // integrals_[m]: the integral image of work_ after m removals, between zero borders of
+  // pad_x_ columns. Earlier ones are kept: a point's sum is the one from the integral image of
+  // the last removal whose kernels reached it.
+  std::vector<cv::Mat> integrals_;
+  std::size_t removals_ = 0;
   // Running sums along each row of work_, a step of the integral image.
   cv::Mat prefix_;
   // Filled by responses() on demand.
   mutable std::vector<cv::Mat> responses_;
+  // sum_l B_l (step 2), valid in the tiles computed so far.
   cv::Mat sum_;
-  cv::Mat scratch_;
+  // Per removal m + 1, the points whose kernels reach the removed box.
+  std::vector<cv::Rect> affected_;
+  // Tiles of the summed response: an upper bound of the sum in each, whether it is computed
+  // and then its maximum. A tile is computed only if its bound reaches the peak.
+  int tiles_x_ = 0;
+  int tiles_y_ = 0;
+  bool bounded_ = false;
+  // Whether all sums of the integral image are exact (see localize()).
+  bool exact_ = false;
+  std::vector<double> tile_bound_;
+  std::vector<float> tile_max_;
+  std::vector<std::uint8_t> tile_done_;
+  std::vector<int> tile_order_;
+  // Steps 3 and 4: B_l over its kernel domain for every l, one after the other.
+  std::vector<float> domain_responses_;
 };
 
 /// Swain and Ballard's single-scale localisation [45] with the (6l + 1) x (2l + 1) kernel of

@@ -95,5 +95,21 @@ TEST(color_histogram, rejects_corrupt_encodings) {
   EXPECT_FALSE(color_histogram::deserialize(zero_bins).has_value());
 }
 
+// The one-pass bin map and whole-image histogram equal the two-pass ones, for odd widths
+// (the eight-pixel loop's tail) and other bin counts.
+TEST(color_histogram, one_pass_bin_map_and_histogram_match) {
+  cv::RNG rng(11);
+  for (const cv::Size size : {cv::Size(320, 240), cv::Size(37, 5), cv::Size(3, 2)})
+    for (const histogram_bins bins : {histogram_bins{}, histogram_bins{16, 4, 3}}) {
+      cv::Mat image(size, CV_8UC3);
+      rng.fill(image, cv::RNG::UNIFORM, 0, 256);
+      cv::Mat indices(1, 1, CV_16U);  // a buffer of the wrong size is replaced
+      const auto histogram = bin_index_image(image, bins, indices);
+      EXPECT_EQ(cv::norm(indices, bin_index_image(image, bins), cv::NORM_INF), 0.0);
+      EXPECT_EQ(histogram, color_histogram::of_bin_indices(
+                               indices, cv::Rect(0, 0, size.width, size.height), bins));
+    }
+}
+
 }  // namespace
 }  // namespace argus::vision

@@ -4,6 +4,7 @@ set(argus_vision_lvr_tests
   color_histogram_test
   backprojection_test
   multiscale_localizer_test
+  multiscale_localizer_equivalence_test
   tracker_test
   fixate_zoom_test
   relevance_test
