@@ -368,8 +368,17 @@ class clock_actor : public caf::event_based_actor {
 
 }  // namespace
 
+bool clock_on_own_thread(unsigned threads, std::size_t participants) {
+  // Where the two lines crossed on this 2-core machine (bench/RESULTS.md, "Clock thread").
+  constexpr std::size_t crossover = 2'000;
+  return threads > 1 && participants >= crossover;
+}
+
 caf::actor spawn_clock(caf::actor_system& system, clock_settings settings, caf::actor recorder,
                        caf::actor progress) {
+  if (settings.own_thread)
+    return system.spawn<clock_actor, caf::detached>(settings, std::move(recorder),
+                                                    std::move(progress));
   return system.spawn<clock_actor>(settings, std::move(recorder), std::move(progress));
 }
 

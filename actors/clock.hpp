@@ -20,7 +20,20 @@ struct clock_settings {
   std::size_t recorder_window = 16;
   /// How often (wall time) the progress observer hears from the clock.
   std::chrono::milliseconds progress_interval{250};
+  /// Runs the clock on a thread of its own rather than on the scheduler's workers
+  /// (clock_on_own_thread() says when that pays).
+  bool own_thread = false;
 };
+
+/// Whether a run with `threads` scheduler workers and `participants` clock participants should
+/// give the clock a thread of its own. On a worker, the clock goes idle between acks and is
+/// resumed by whichever worker sent the next one, so with thousands of participants its state
+/// crosses cores thousands of times per tick (bench/RESULTS.md: 10,000 nodes and 39,176 links
+/// on 2 threads, 0.17 -> 1.0 M messages/s on its own thread). With few participants the
+/// opposite holds: every phase is a short round trip, and waking a thread of its own costs
+/// more than the migration. Never with one worker (one more thread would share its core) and
+/// never under CAF's test coordinator, which runs only scheduled actors.
+bool clock_on_own_thread(unsigned threads, std::size_t participants);
 
 /// Spawns the lockstep virtual-time clock (DESIGN.md, "Time").
 ///

@@ -17,6 +17,7 @@
 #include "actors/type_ids.hpp"
 #include "actors/video_recorder.hpp"
 #include "actors/world_coordinator.hpp"
+#include "protocol/topology.hpp"
 #include "world/layout_loader.hpp"
 
 namespace argus::actors {
@@ -90,6 +91,8 @@ run_outcome run_scenario(const config::scenario& scenario, const run_options& op
   cs.end_tick = end_tick;
   cs.tick_seconds = tick_seconds;
   cs.speed = scenario.run.speed;
+  cs.own_thread = clock_on_own_thread(
+      threads, scenario.cameras.size() + protocol::topology(scenario).links().size());
   auto clock = spawn_clock(system, cs, recorder, progress);
 
   // Joins and link attachments go out from this thread, in this order, before `start`:

@@ -30,7 +30,8 @@ caf::behavior bare_participant(caf::event_based_actor* self, std::uint64_t id) {
 }
 
 // Returns the wall seconds the clock reports for `ticks` ticks.
-double run_clock(std::int64_t participants, unsigned threads, bool busy, std::int64_t ticks) {
+double run_clock(std::int64_t participants, unsigned threads, bool busy, bool own_thread,
+                 std::int64_t ticks) {
   system_config cfg(threads);
   caf::actor_system sys{cfg};
   recorder_settings rs;
@@ -38,6 +39,7 @@ double run_clock(std::int64_t participants, unsigned threads, bool busy, std::in
   auto recorder = spawn_recorder(sys, rs);
   clock_settings cs;
   cs.end_tick = ticks;
+  cs.own_thread = own_thread;
   auto clock = spawn_clock(sys, cs, recorder, caf::actor{});
   // Participants spread over the three phases after `faults`.
   for (std::int64_t i = 0; i < participants; ++i) {
@@ -57,12 +59,13 @@ void bm_clock(benchmark::State& state) {
   auto participants = state.range(0);
   auto threads = static_cast<unsigned>(state.range(1));
   bool busy = state.range(2) != 0;
+  bool own_thread = state.range(3) != 0;
   // Enough ticks for a stable figure, few enough to finish when each tick is expensive.
   std::int64_t ticks = busy ? std::clamp<std::int64_t>(400'000 / participants, 20, 20'000) : 20'000;
   double total_wall = 0.0;
   std::int64_t total_ticks = 0;
   for (auto _ : state) {
-    double wall = run_clock(participants, threads, busy, ticks);
+    double wall = run_clock(participants, threads, busy, own_thread, ticks);
     state.SetIterationTime(wall);
     total_wall += wall;
     total_ticks += ticks;
@@ -73,14 +76,17 @@ void bm_clock(benchmark::State& state) {
 }
 
 void clock_args(benchmark::internal::Benchmark* b) {
+  // With 2 workers, the clock on a worker (clock_thread 0) and on its own thread (1).
   for (int busy : {0, 1})
     for (int threads : {1, 2})
-      for (int n : {10, 100, 1000, 10000}) b->Args({n, threads, busy});
+      for (int own : {0, 1})
+        for (int n : {10, 100, 1000, 10000})
+          if (threads > 1 || own == 0) b->Args({n, threads, busy, own});
 }
 
 BENCHMARK(bm_clock)
     ->Apply(clock_args)
-    ->ArgNames({"participants", "threads", "busy"})
+    ->ArgNames({"participants", "threads", "busy", "clock_thread"})
     ->UseManualTime()
     ->Unit(benchmark::kMillisecond)
     ->Iterations(3);

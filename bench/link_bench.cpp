@@ -85,7 +85,7 @@ struct outcome {
 };
 
 outcome run_links(const config::scenario& s, const protocol::topology& topo, unsigned threads,
-                  int burst, std::int64_t ticks) {
+                  bool own_thread, int burst, std::int64_t ticks) {
   system_config cfg(threads);
   caf::actor_system sys{cfg};
   recorder_settings rs;
@@ -93,6 +93,7 @@ outcome run_links(const config::scenario& s, const protocol::topology& topo, uns
   auto recorder = spawn_recorder(sys, rs);
   clock_settings cs;
   cs.end_tick = ticks;
+  cs.own_thread = own_thread;
   auto clock = spawn_clock(sys, cs, recorder, caf::actor{});
   auto lookahead = protocol::link_model::min_delay_ticks(s.network, s.run.tick.count());
   std::map<int, std::shared_ptr<node_links>> per_node;
@@ -136,13 +137,14 @@ void bm_links(benchmark::State& state) {
   auto nodes = static_cast<int>(state.range(0));
   auto threads = static_cast<unsigned>(state.range(1));
   auto burst = static_cast<int>(state.range(2));
+  bool own_thread = state.range(3) != 0;
   auto s = graph(nodes);
   protocol::topology topo(s);
   std::int64_t ticks = std::clamp<std::int64_t>(400'000 / (8 * nodes), 5, 200);
   double wall = 0;
   std::uint64_t messages = 0;
   for (auto _ : state) {
-    auto o = run_links(s, topo, threads, burst, ticks);
+    auto o = run_links(s, topo, threads, own_thread, burst, ticks);
     state.SetIterationTime(o.wall);
     wall += o.wall;
     messages += o.messages;
@@ -152,9 +154,18 @@ void bm_links(benchmark::State& state) {
   state.counters["mean_degree"] = 2.0 * static_cast<double>(topo.links().size()) / nodes;
 }
 
+// With 2 workers, the clock on a worker (clock_thread 0) and on its own thread (1).
+void link_args(benchmark::internal::Benchmark* b) {
+  for (int burst : {1, 8})
+    for (int threads : {1, 2})
+      for (int own : {0, 1})
+        for (int nodes : {100, 1000, 10000})
+          if (threads > 1 || own == 0) b->Args({nodes, threads, burst, own});
+}
+
 BENCHMARK(bm_links)
-    ->ArgsProduct({{100, 1000, 10000}, {1, 2}, {1, 8}})
-    ->ArgNames({"nodes", "threads", "burst"})
+    ->Apply(link_args)
+    ->ArgNames({"nodes", "threads", "burst", "clock_thread"})
     ->UseManualTime()
     ->Unit(benchmark::kMillisecond)
     ->Iterations(2);

@@ -33,6 +33,7 @@ double run_world(unsigned pedestrians, unsigned threads, std::int64_t ticks) {
   auto recorder = spawn_recorder(sys, rs);
   clock_settings cs;
   cs.end_tick = ticks;
+  cs.own_thread = clock_on_own_thread(threads, threads + 1);  // partitions + coordinator
   auto clock = spawn_clock(sys, cs, recorder, caf::actor{});
   world_run_settings ws;
   ws.station = where;

@@ -27,6 +27,7 @@ struct run_spec {
   double speed = 0.0;
   std::uint64_t seed = 42;
   std::int64_t ticks = 150;
+  bool clock_thread = false;  // the clock on a thread of its own
 };
 
 // Runs 32 chatters (8 per phase; every other one on demand) and returns events.jsonl.
@@ -45,6 +46,7 @@ std::string run_chatters(const run_spec& spec, const std::string& tag) {
     clock_settings cs;
     cs.end_tick = spec.ticks;
     cs.speed = spec.speed;
+    cs.own_thread = spec.clock_thread;
     auto clock = spawn_clock(sys, cs, recorder, caf::actor{});
     auto peers = std::make_shared<peer_directory>();
     std::vector<participant_info> infos;
@@ -81,6 +83,16 @@ TEST(determinism, same_seed_same_event_log_for_any_thread_count) {
   for (unsigned threads : {2u, 4u, 8u}) {
     auto log = run_chatters({.threads = threads}, "t" + std::to_string(threads));
     EXPECT_EQ(log, reference) << "event log differs with " << threads << " threads";
+  }
+}
+
+TEST(determinism, same_event_log_with_the_clock_on_its_own_thread) {
+  auto reference = run_chatters({.threads = 1}, "worker");
+  for (unsigned threads : {2u, 4u}) {
+    auto log =
+        run_chatters({.threads = threads, .clock_thread = true}, "own" + std::to_string(threads));
+    EXPECT_EQ(log, reference) << "event log differs with the clock on its own thread, " << threads
+                              << " workers";
   }
 }
 
