@@ -43,6 +43,7 @@ struct link_input {
 struct handed_over {
   std::int64_t due = 0;
   std::size_t to = 0;
+  const std::string* kind = nullptr;  // key of `counts` in link_state::counts
   protocol::message_counts* counts = nullptr;
 };
 
@@ -183,7 +184,7 @@ void hand_over(link_actor* self, tick_context& ctx) {
         continue;
       }
       ++c.delivered;
-      if (due > tick) st.handed.push_back(handed_over{due, to, &c});
+      if (due > tick) st.handed.push_back(handed_over{due, to, st.last_kind, &c});
       ++t.message.hops;
       out[to].push_back(net_delivery{due, std::move(t.message)});
     }
@@ -256,11 +257,9 @@ caf::behavior link(link_actor* self, participant_info info, config::network_sett
         // Handed over but due after the run: the node never read them.
         for (const auto& h : st.handed) {
           if (h.due < end_tick) continue;
-          for (auto& [kind, c] : st.counts) {
-            if (&c != h.counts) continue;
-            --counts[kind].delivered;
-            ++counts[kind].in_flight;
-          }
+          auto& c = counts[*h.kind];
+          --c.delivered;
+          ++c.in_flight;
         }
         return link_report{st.info.name, std::move(counts)};
       },

@@ -7,13 +7,11 @@
 #include "actors/link.hpp"
 #include "actors/link_command.hpp"
 #include "actors/type_ids.hpp"
-#include "protocol/topology.hpp"
 
 namespace argus::actors {
 
 network_directory spawn_network(caf::actor_system& system, const config::scenario& scenario,
-                                const caf::actor& clock) {
-  protocol::topology topo(scenario);
+                                const protocol::topology& topo, const caf::actor& clock) {
   network_directory net;
   std::vector<std::pair<caf::actor, participant_info>> links;
   for (std::size_t i = 0; i < topo.links().size(); ++i) {

@@ -91,13 +91,13 @@ run_outcome run_scenario(const config::scenario& scenario, const run_options& op
   cs.end_tick = end_tick;
   cs.tick_seconds = tick_seconds;
   cs.speed = scenario.run.speed;
-  cs.own_thread = clock_on_own_thread(
-      threads, scenario.cameras.size() + protocol::topology(scenario).links().size());
+  const protocol::topology topo(scenario);
+  cs.own_thread = clock_on_own_thread(threads, scenario.cameras.size() + topo.links().size());
   auto clock = spawn_clock(system, cs, recorder, progress);
 
   // Joins and link attachments go out from this thread, in this order, before `start`:
   // enqueued in program order, they all reach their receivers before the first tick.
-  auto net = spawn_network(system, scenario, clock);
+  auto net = spawn_network(system, scenario, topo, clock);
   auto script = spawn_scenario_script(system, scenario, clock);
   caf::anon_send(clock, join_atom_v, script, script_participant());
   auto faults = spawn_fault_injector(system, scenario, clock, std::move(net));

@@ -66,7 +66,7 @@ struct fixture : recording_fixture {
     cs.end_tick = ticks;
     cs.tick_seconds = scenario.run.tick.count();
     auto clock = spawn_clock(sys, cs, recorder, caf::actor{});
-    auto net = spawn_network(sys, scenario, clock);
+    auto net = spawn_network(sys, scenario, protocol::topology(scenario), clock);
     auto op = sys.spawn(operator_participant, net.cameras, std::move(plan));
     self->send(clock, join_atom_v, op,
                participant_info{operator_id, "operator", phase::faults, wake_mode::every_tick});
