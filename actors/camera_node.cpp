@@ -2,6 +2,7 @@
 
 #include <vector>
 
+#include "actors/link_outbox.hpp"
 #include "actors/net_arrivals.hpp"
 #include "actors/participant_ids.hpp"
 #include "actors/tick_context.hpp"
@@ -31,11 +32,19 @@ struct camera_node_state {
   std::unique_ptr<protocol::node_network> network;
   net_arrivals arrivals;
   ordered_inbox<origination> to_originate;
-  // What this node sends on a link is never due before this many ticks: the link need not
-  // read it sooner (docs/network.md, "Lookahead").
-  std::int64_t link_lookahead = 1;
+  // What this node sends on a link is never due before the links' lookahead: it goes to the
+  // link once per lookahead window (docs/network.md, "Outbox").
+  link_outbox outbox{1};
   std::uint64_t mail_seq = 0;
 };
+
+using node_actor = caf::stateful_actor<camera_node_state>;
+
+void hand_to_links(node_actor* self, tick_context* ctx) {
+  self->state.outbox.flush(self, self->state.camera_id, [&](std::uint64_t link) {
+    if (ctx != nullptr) ctx->sent_mail_to(link);
+  });
+}
 
 std::vector<int> neighbours_of(const link_directory& links) {
   std::vector<int> out;
@@ -43,9 +52,9 @@ std::vector<int> neighbours_of(const link_directory& links) {
   return out;
 }
 
-void flush_network(caf::stateful_actor<camera_node_state>* self, tick_context& ctx) {
+void flush_network(node_actor* self, tick_context& ctx) {
   auto& st = self->state;
-  // One CAF message per link per tick, however many network messages it carries.
+  // One batch per link per turn, however many network messages it carries.
   std::map<int, std::vector<protocol::net_message>> by_link;
   for (auto& out : st.network->take_outgoing())
     by_link[out.neighbour].push_back(std::move(out.message));
@@ -54,9 +63,9 @@ void flush_network(caf::stateful_actor<camera_node_state>* self, tick_context& c
     if (it == st.links.end()) continue;
     mail_stamp stamp{ctx.tick(), static_cast<std::uint8_t>(phase::cameras), st.info.id,
                      st.mail_seq++};
-    self->send(it->second.handle, net_send_atom_v, stamp, st.camera_id, std::move(batch));
-    ctx.sent_mail_to(it->second.participant, ctx.tick() + st.link_lookahead);
+    st.outbox.add(it->second.participant, it->second.handle, stamp, std::move(batch));
   }
+  if (st.outbox.window_ends(ctx.tick())) hand_to_links(self, &ctx);
   for (const auto& change : st.network->take_changes())
     ctx.emit(change.up ? "neighbour_up" : "neighbour_lost",
              fmt::format(R"("camera":{},"neighbour":{})", st.camera_id, change.neighbour));
@@ -65,18 +74,28 @@ void flush_network(caf::stateful_actor<camera_node_state>* self, tick_context& c
              fmt::format(R"("camera":{},"peer":{},"request":"{}")", st.camera_id, f.peer, f.kind));
 }
 
-caf::behavior camera_node(caf::stateful_actor<camera_node_state>* self,
-                          const config::scenario& scenario, config::camera_settings camera,
-                          link_directory links) {
+caf::behavior camera_node(node_actor* self, const config::scenario& scenario,
+                          config::camera_settings camera, link_directory links) {
   auto& st = self->state;
   st.info = camera_participant(camera);
   st.camera_id = camera.id;
   st.ptz = camera.type == config::camera_type::ptz;
   st.network = std::make_unique<protocol::node_network>(camera.id, neighbours_of(links), scenario);
   st.links = std::move(links);
-  st.link_lookahead =
-      protocol::link_model::min_delay_ticks(scenario.network, scenario.run.tick.count());
+  st.outbox = link_outbox{
+      protocol::link_model::min_delay_ticks(scenario.network, scenario.run.tick.count())};
+  // What the node sent before it went down was on the wire already: it still reaches the
+  // links, and the fault injector waits for this node's end before the links run again.
+  self->set_exit_handler([self](caf::exit_msg& msg) {
+    hand_to_links(self, nullptr);
+    self->quit(msg.reason);
+  });
   return {
+      // The run is over: the links count what is still queued as in flight.
+      [self](flush_atom) {
+        hand_to_links(self, nullptr);
+        return done_atom_v;
+      },
       [self](net_deliver_atom, const mail_stamp& stamp, int from,
              std::vector<net_delivery>& batch) { self->state.arrivals.put(stamp, from, batch); },
       [self](net_retract_atom, std::uint64_t link, std::int64_t from_due) {
@@ -121,8 +140,10 @@ caf::behavior camera_node(caf::stateful_actor<camera_node_state>* self,
 }  // namespace
 
 participant_info camera_participant(const config::camera_settings& camera) {
-  return {participant_ids::camera(camera.id), fmt::format("camera/{}", camera.id), phase::cameras,
-          wake_mode::every_tick};
+  participant_info info{participant_ids::camera(camera.id), fmt::format("camera/{}", camera.id),
+                        phase::cameras, wake_mode::every_tick};
+  info.flushes_at_end = true;
+  return info;
 }
 
 caf::actor spawn_camera_node(caf::actor_system& system, const config::scenario& scenario,

@@ -294,7 +294,22 @@ class clock_actor : public caf::event_based_actor {
     result_.wall_seconds = wall_seconds(clock().now());
     result_.participants = joined_;
     result_.unexpected_down = unexpected_down_;
-    // Participants that account for something (links) report before the recorder closes.
+    // Senders hand over what they still hold before the links count what is in flight.
+    for (auto& [id, e] : participants_) {
+      if (!e.info.flushes_at_end) continue;
+      ++flushes_pending_;
+      request(e.handle, caf::infinite, flush_atom_v)
+          .then([this](done_atom) { flush_received(); }, [this](caf::error&) { flush_received(); });
+    }
+    if (flushes_pending_ == 0) request_reports();
+  }
+
+  void flush_received() {
+    if (--flushes_pending_ == 0) request_reports();
+  }
+
+  // Participants that account for something (links) report before the recorder closes.
+  void request_reports() {
     for (auto& [id, e] : participants_) {
       if (!e.info.reports_at_end) continue;
       ++reports_pending_;
@@ -349,6 +364,7 @@ class clock_actor : public caf::event_based_actor {
   std::set<std::uint64_t> retired_;
   std::uint64_t joined_ = 0;
   run_result result_;
+  std::size_t flushes_pending_ = 0;
   std::size_t reports_pending_ = 0;
   std::vector<std::string> unexpected_down_;
   std::array<std::vector<std::uint64_t>, phase_count> every_tick_;  // sorted ids

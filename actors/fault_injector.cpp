@@ -1,7 +1,9 @@
 #include "actors/fault_injector.hpp"
 
 #include <cmath>
+#include <optional>
 #include <random>
+#include <set>
 #include <string_view>
 #include <vector>
 
@@ -33,6 +35,11 @@ struct injector_state {
   std::mt19937_64 rng;
   double failure_per_tick = 0.0;
   std::uint64_t mail_seq = 0;
+  // Cameras crashed this turn that have not ended yet, and the ack held until they have: a
+  // dying camera hands its links what it had sent (actors/link_outbox.hpp), and the links
+  // must have it before they run again.
+  std::set<caf::actor_addr> dying;
+  std::optional<tick_ack> held_ack;
 };
 
 using injector = caf::stateful_actor<injector_state>;
@@ -71,7 +78,9 @@ bool crash(injector* self, tick_context& ctx, int camera) {
   // The retire reaches the clock before this actor's ack: the camera leaves the barrier at a
   // deterministic point, and its death is not reported as unexpected.
   self->send(st.clock, retire_atom_v, participant_ids::camera(camera));
-  self->send_exit(it->second, caf::exit_reason::kill);
+  self->monitor(it->second);
+  st.dying.insert(it->second.address());
+  self->send_exit(it->second, crash_reason());
   it->second = caf::actor{};
   link_command cmd;
   cmd.op = link_op::node_down;
@@ -172,6 +181,12 @@ caf::behavior fault_injector(injector* self, config::scenario scenario, caf::act
   st.scenario = std::move(scenario);
   st.clock = std::move(clock);
   st.net = std::move(net);
+  self->set_down_handler([self](caf::down_msg& msg) {
+    auto& st = self->state;
+    if (st.dying.erase(msg.source) == 0 || !st.dying.empty() || !st.held_ack) return;
+    self->send(st.clock, std::move(*st.held_ack));
+    st.held_ack.reset();
+  });
   return {
       [self](tick_atom, std::int64_t tick, std::uint8_t) {
         auto& st = self->state;
@@ -180,12 +195,19 @@ caf::behavior fault_injector(injector* self, config::scenario scenario, caf::act
           perform(self, ctx, st.plan[st.next++]);
         random_failures(self, ctx);
         if (st.next < st.plan.size()) ctx.wake_at(st.plan[st.next].tick);
-        self->send(st.clock, std::move(ctx).finish());
+        if (st.dying.empty())
+          self->send(st.clock, std::move(ctx).finish());
+        else
+          st.held_ack = std::move(ctx).finish();
       },
   };
 }
 
 }  // namespace
+
+caf::error crash_reason() {
+  return caf::error{1, caf::atom("crash")};
+}
 
 participant_info fault_injector_participant(const config::scenario& scenario) {
   participant_info info;

@@ -17,14 +17,20 @@ struct network_directory {
   std::map<int, link_directory> links;
 };
 
+/// The exit reason of a crash the injector causes. Not `exit_reason::kill`, which an actor
+/// cannot intercept: a camera hands its links what it sent before the crash, and nothing else.
+caf::error crash_reason();
+
 /// How the fault injector takes part in the clock: phase faults; every tick when random node
 /// failures are on, else woken at its next scheduled fault.
 participant_info fault_injector_participant(const config::scenario& scenario);
 
 /// Spawns the fault injector (docs/network.md). At each scheduled fault's time, and at random
 /// with `network.node_failure_probability` per node per second of virtual time, it:
-/// - `crash`: retires the camera at the clock, kills its actor (a CAF exit, reason kill), and
-///   tells the camera's links that the node is down, so messages to it are dropped;
+/// - `crash`: retires the camera at the clock, kills its actor (a CAF exit, `crash_reason()`),
+///   and tells the camera's links that the node is down, so messages to it are dropped. Its
+///   acknowledgement waits for the camera's end: what the camera had already sent is handed to
+///   its links as it goes (actors/link_outbox.hpp);
 /// - `crash_and_recover`: the same, then after `length` spawns a fresh, empty-handed camera
 ///   actor, joins it to the clock and attaches it to its links (`node_recovered`);
 /// - `link_cut` / `link_heal`: cuts or heals the link between `camera` and `peer`;

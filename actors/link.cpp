@@ -1,12 +1,15 @@
 #include "actors/link.hpp"
 
+#include <algorithm>
 #include <deque>
+#include <limits>
 #include <map>
 #include <optional>
 #include <tuple>
 #include <vector>
 
 #include "actors/net_delivery.hpp"
+#include "actors/net_send_batch.hpp"
 #include "actors/ordered_inbox.hpp"
 #include "actors/participant_ids.hpp"
 #include "actors/tick_context.hpp"
@@ -47,6 +50,12 @@ struct handed_over {
   protocol::message_counts* counts = nullptr;
 };
 
+struct loss_burst {
+  std::int64_t from = 0;
+  std::int64_t until = 0;
+  double loss = 0.0;
+};
+
 struct link_state {
   participant_info info;
   std::array<endpoint, 2> ends;
@@ -58,14 +67,24 @@ struct link_state {
   std::map<std::int64_t, std::vector<in_transit>> pending;
   std::deque<handed_over> handed;              // in order of due tick
   std::array<std::int64_t, 2> last_due{0, 0};  // per direction, for FIFO delivery
-  bool cut = false;
-  double burst_loss = 0.0;
-  std::int64_t burst_until = -1;
+  // Sent before this tick and the link was, or later got, cut: lost. Max while cut; the heal's
+  // tick after. A batch can arrive after a cut or heal stamped later than it (an outbox hands
+  // over once per lookahead), so a message is judged by when it was sent, not when read.
+  std::int64_t cut_until = std::numeric_limits<std::int64_t>::min();
+  // Loss bursts by start tick; a message sent at s takes the last one started by s.
+  std::vector<loss_burst> bursts;
   std::uint64_t delivered_seq = 0;
   protocol::accounting_by_kind counts;
   // Most traffic is of one kind at a time: skip the string-keyed lookup when it repeats.
   const std::string* last_kind = nullptr;
   protocol::message_counts* last_counts = nullptr;
+
+  // Table 2's loss probability, or a burst's for a message sent at `sent_tick`.
+  double loss_at(std::int64_t sent_tick) const {
+    for (auto it = bursts.rbegin(); it != bursts.rend(); ++it)
+      if (it->from <= sent_tick) return sent_tick < it->until ? it->loss : model->loss();
+    return model->loss();
+  }
 
   protocol::message_counts& counter(const std::string& kind) {
     if (last_kind == nullptr || *last_kind != kind) {
@@ -115,7 +134,7 @@ void apply(link_actor* self, std::int64_t tick, const link_command& cmd) {
     }
     case link_op::cut:
       // The cut catches everything on the wire: due from now on, handed over or not.
-      st.cut = true;
+      st.cut_until = std::numeric_limits<std::int64_t>::max();
       for (const auto& e : st.ends)
         if (e.up) self->send(e.handle, net_retract_atom_v, st.info.id, tick);
       recount_handed(st, 2, tick, /*as_lost=*/true);
@@ -124,26 +143,23 @@ void apply(link_actor* self, std::int64_t tick, const link_command& cmd) {
       st.pending.clear();
       break;
     case link_op::heal:
-      st.cut = false;
+      if (st.cut_until > tick) st.cut_until = tick;
       break;
     case link_op::loss_burst:
-      st.burst_loss = cmd.loss_probability;
-      st.burst_until = cmd.until_tick;
+      st.bursts.push_back(loss_burst{tick, cmd.until_tick, cmd.loss_probability});
       break;
   }
 }
 
-// `sent_tick` is when the endpoint sent it: the delay counts from then.
+// `sent_tick` is when the endpoint sent it: the delay counts from then, and a cut or a loss
+// burst applies by it. One draw set per message whatever its fate.
 void accept(link_state& st, std::int64_t sent_tick, in_transit t) {
   auto& c = st.counter(t.message.kind);
   ++c.sent;
-  if (st.cut) {
-    ++c.lost;
-    return;
-  }
-  double loss = sent_tick < st.burst_until ? st.burst_loss : -1.0;
-  auto fate = loss >= 0.0 ? st.model->draw(loss) : st.model->draw();
-  if (fate.lost) {
+  auto fate = st.model->draw(st.loss_at(sent_tick));
+  // A message read after a cut that came later than it was on the wire when the link was cut:
+  // everything it could be due at is after the cut (due >= sent + lookahead > cut tick).
+  if (fate.lost || sent_tick < st.cut_until) {
     ++c.lost;
     return;
   }
@@ -206,6 +222,16 @@ void hand_over(link_actor* self, tick_context& ctx) {
   }
 }
 
+// A burst matters to a message sent after it started and before the next one did. What an
+// outbox still holds was sent at most a few lookaheads ago; bursts superseded before that go.
+void forget_bursts(link_state& st, std::int64_t tick) {
+  auto horizon = tick - 4 * st.lookahead;
+  auto superseded = std::find_if(st.bursts.begin(), st.bursts.end(),
+                                 [&](const loss_burst& b) { return b.from > horizon; });
+  if (superseded != st.bursts.begin()) --superseded;  // the last one started by then stays
+  st.bursts.erase(st.bursts.begin(), superseded);
+}
+
 caf::behavior link(link_actor* self, participant_info info, config::network_settings network,
                    double tick_seconds, std::uint64_t seed, int a, int b) {
   auto& st = self->state;
@@ -217,9 +243,9 @@ caf::behavior link(link_actor* self, participant_info info, config::network_sett
   st.model = std::make_unique<protocol::link_model>(network, tick_seconds,
                                                     config::derive_seed(seed, st.info.id));
   return {
-      [self](net_send_atom, const mail_stamp& stamp, int from,
-             std::vector<protocol::net_message>& batch) {
-        self->state.inbox.put(stamp, link_input{std::nullopt, from, std::move(batch)});
+      [self](net_send_atom, int from, std::vector<net_send_batch>& batches) {
+        for (auto& b : batches)
+          self->state.inbox.put(b.stamp, link_input{std::nullopt, from, std::move(b.messages)});
       },
       [self](link_cmd_atom, const mail_stamp& stamp, link_command& cmd) {
         self->state.inbox.put(stamp, link_input{std::move(cmd), 0, {}});
@@ -240,7 +266,7 @@ caf::behavior link(link_actor* self, participant_info info, config::network_sett
         // Nothing due before the horizon is left but for nodes that are down, so the next
         // hand-over is a lookahead later at the soonest; a node's own send wakes us as well.
         if (!st.pending.empty()) ctx.wake_at(st.pending.begin()->first);
-        if (st.burst_until > tick) ctx.wake_at(st.burst_until);
+        forget_bursts(st, tick);
         self->send(caf::actor_cast<caf::actor>(self->current_sender()), std::move(ctx).finish());
       },
       [self](report_atom, std::int64_t end_tick) {

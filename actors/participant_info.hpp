@@ -23,11 +23,14 @@ struct participant_info {
   /// Answers `(report_atom, std::int64_t end_tick)` with a `link_report` when the run ends
   /// (links do).
   bool reports_at_end = false;
+  /// Answers `(flush_atom)` with `done_atom` when the run ends, after handing its links what
+  /// it still holds for them, before any participant reports (camera nodes do).
+  bool flushes_at_end = false;
 };
 
 template <class Inspector>
 typename Inspector::result_type inspect(Inspector& f, participant_info& x) {
-  return f(x.id, x.name, x.tick_phase, x.mode, x.reports_at_end);
+  return f(x.id, x.name, x.tick_phase, x.mode, x.reports_at_end, x.flushes_at_end);
 }
 
 }  // namespace argus::actors

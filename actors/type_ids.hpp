@@ -9,6 +9,7 @@
 #include "actors/link_command.hpp"
 #include "actors/link_report.hpp"
 #include "actors/net_delivery.hpp"
+#include "actors/net_send_batch.hpp"
 #include "actors/ordered_inbox.hpp"
 #include "actors/participant_info.hpp"
 #include "actors/render_pool.hpp"
@@ -33,6 +34,8 @@ CAF_ADD_TYPE_ID(argus, (argus::protocol::net_message))
 CAF_ADD_TYPE_ID(argus, (std::vector<argus::protocol::net_message>))
 CAF_ADD_TYPE_ID(argus, (argus::actors::net_delivery))
 CAF_ADD_TYPE_ID(argus, (std::vector<argus::actors::net_delivery>))
+CAF_ADD_TYPE_ID(argus, (argus::actors::net_send_batch))
+CAF_ADD_TYPE_ID(argus, (std::vector<argus::actors::net_send_batch>))
 CAF_ADD_TYPE_ID(argus, (argus::actors::world_update))
 CAF_ADD_TYPE_ID(argus, (argus::actors::partition_report))
 CAF_ADD_TYPE_ID(argus, (argus::actors::render_request))
@@ -59,5 +62,6 @@ CAF_ADD_ATOM(argus, argus::actors, world_update_atom, "w_update")
 CAF_ADD_ATOM(argus, argus::actors, world_attach_atom, "w_attach")
 CAF_ADD_ATOM(argus, argus::actors, render_atom, "render")
 CAF_ADD_ATOM(argus, argus::actors, world_snapshot_atom, "w_snap")
+CAF_ADD_ATOM(argus, argus::actors, flush_atom, "flush")
 
 CAF_END_TYPE_ID_BLOCK(argus)

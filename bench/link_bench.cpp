@@ -14,6 +14,7 @@
 #include "actors/clock.hpp"
 #include "actors/link.hpp"
 #include "actors/link_command.hpp"
+#include "actors/link_outbox.hpp"
 #include "actors/participant_ids.hpp"
 #include "actors/recorder.hpp"
 #include "actors/system_config.hpp"
@@ -31,30 +32,41 @@ struct node_links {
   std::vector<std::pair<caf::actor, std::uint64_t>> links;
 };
 
-// Sends `burst` messages per link per tick; counts nothing itself (the links account).
-caf::behavior blaster(caf::event_based_actor* self, int node, int burst, std::int64_t lookahead,
-                      std::shared_ptr<node_links> mine) {
-  auto seq = std::make_shared<std::uint32_t>(0);
+struct blaster_state {
+  std::uint32_t seq = 0;
+  std::uint64_t mail_seq = 0;
+  link_outbox outbox{1};
+};
+
+// Sends `burst` messages per link per tick through an outbox, as a camera node does; counts
+// nothing itself (the links account).
+caf::behavior blaster(caf::stateful_actor<blaster_state>* self, int node, int burst,
+                      std::int64_t lookahead, std::shared_ptr<node_links> mine) {
+  self->state.outbox = link_outbox{lookahead};
   return {
       [](net_deliver_atom, const mail_stamp&, int, const std::vector<net_delivery>&) {
         // nop: arrivals are the links' business here
       },
       [](net_retract_atom, std::uint64_t, std::int64_t) {},
+      [self, node](flush_atom) {
+        self->state.outbox.flush(self, node, [](std::uint64_t) {});
+        return done_atom_v;
+      },
       [=](tick_atom, std::int64_t tick, std::uint8_t) {
+        auto& st = self->state;
         tick_context ctx(participant_ids::camera(node), "n", tick, phase::cameras);
         for (const auto& [link, id] : mine->links) {
           std::vector<protocol::net_message> batch(static_cast<std::size_t>(burst));
           for (auto& m : batch) {
-            m.id = protocol::make_message_id(node, (*seq)++);
+            m.id = protocol::make_message_id(node, st.seq++);
             m.origin = node;
             m.kind = "bench";
           }
-          auto first = batch.front().id;
-          self->send(link, net_send_atom_v,
-                     mail_stamp{tick, 3, participant_ids::camera(node), first}, node,
-                     std::move(batch));
-          ctx.sent_mail_to(id, tick + lookahead);
+          st.outbox.add(id, link, mail_stamp{tick, 3, participant_ids::camera(node), st.mail_seq++},
+                        std::move(batch));
         }
+        if (st.outbox.window_ends(tick))
+          st.outbox.flush(self, node, [&](std::uint64_t id) { ctx.sent_mail_to(id); });
         self->send(caf::actor_cast<caf::actor>(self->current_sender()), std::move(ctx).finish());
       },
   };
@@ -101,9 +113,9 @@ outcome run_links(const config::scenario& s, const protocol::topology& topo, uns
   for (int n : topo.nodes()) per_node[n] = std::make_shared<node_links>();
   for (int n : topo.nodes()) {
     nodes[n] = sys.spawn(blaster, n, burst, lookahead, per_node[n]);
-    caf::anon_send(
-        clock, join_atom_v, nodes[n],
-        participant_info{participant_ids::camera(n), "n", phase::cameras, wake_mode::every_tick});
+    participant_info info{participant_ids::camera(n), "n", phase::cameras, wake_mode::every_tick};
+    info.flushes_at_end = true;
+    caf::anon_send(clock, join_atom_v, nodes[n], info);
   }
   for (std::size_t i = 0; i < topo.links().size(); ++i) {
     auto [a, b] = topo.links()[i];

@@ -35,6 +35,9 @@ class link_model {
   /// Draws with the scenario's loss probability.
   link_fate draw() { return draw(loss_); }
 
+  /// The scenario's loss probability.
+  double loss() const noexcept { return loss_; }
+
  private:
   std::int64_t draw_delay_ticks();
 

@@ -4,9 +4,11 @@
 
 #include <functional>
 #include <map>
+#include <set>
 
 #include "actors/clock.hpp"
 #include "actors/link_command.hpp"
+#include "actors/link_outbox.hpp"
 #include "actors/net_arrivals.hpp"
 #include "actors/participant_ids.hpp"
 #include "actors/system_config.hpp"
@@ -46,7 +48,13 @@ caf::behavior endpoint(caf::event_based_actor* self, endpoint_plan plan, caf::ac
                        std::uint64_t link_id, std::shared_ptr<endpoint_log> log) {
   auto seq = std::make_shared<std::uint32_t>(0);
   auto arrivals = std::make_shared<net_arrivals>();
+  // 200 ms at 15 Hz: the links' lookahead. Sends go through an outbox as a camera node's do.
+  auto outbox = std::make_shared<link_outbox>(3);
   return {
+      [=](flush_atom) {
+        outbox->flush(self, plan.node, [](std::uint64_t) {});
+        return done_atom_v;
+      },
       [=](net_deliver_atom, const mail_stamp& stamp, int from, std::vector<net_delivery>& batch) {
         arrivals->put(stamp, from, batch);
       },
@@ -68,15 +76,24 @@ caf::behavior endpoint(caf::event_based_actor* self, endpoint_plan plan, caf::ac
             m.body = std::to_string(tick);
             batch.push_back(std::move(m));
           }
-          self->send(link, net_send_atom_v,
-                     mail_stamp{tick, 3, participant_ids::camera(plan.node),
-                                static_cast<std::uint64_t>(tick)},
-                     plan.node, std::move(batch));
-          ctx.sent_mail_to(link_id, tick + 3);  // 200 ms at 15 Hz: the links' lookahead
+          outbox->add(link_id, link,
+                      mail_stamp{tick, 3, participant_ids::camera(plan.node),
+                                 static_cast<std::uint64_t>(tick)},
+                      std::move(batch));
         }
+        if (outbox->window_ends(tick))
+          outbox->flush(self, plan.node, [&](std::uint64_t id) { ctx.sent_mail_to(id); });
         self->send(caf::actor_cast<caf::actor>(self->current_sender()), std::move(ctx).finish());
       },
   };
+}
+
+// Ticked every tick as a camera; hands its outbox to the link when the run ends.
+participant_info endpoint_participant(int node, std::string name) {
+  participant_info info{participant_ids::camera(node), std::move(name), phase::cameras,
+                        wake_mode::every_tick};
+  info.flushes_at_end = true;
+  return info;
 }
 
 // What the fault injector does to actors besides telling the link (kill, retire, join).
@@ -123,12 +140,8 @@ struct fixture : recording_fixture {
     attach(1, e1);
     attach(2, e2);
     self->send(clock, join_atom_v, link, link_participant(0, 1, 2));
-    self->send(
-        clock, join_atom_v, e1,
-        participant_info{participant_ids::camera(1), "e1", phase::cameras, wake_mode::every_tick});
-    self->send(
-        clock, join_atom_v, e2,
-        participant_info{participant_ids::camera(2), "e2", phase::cameras, wake_mode::every_tick});
+    self->send(clock, join_atom_v, e1, endpoint_participant(1, "e1"));
+    self->send(clock, join_atom_v, e2, endpoint_participant(2, "e2"));
     auto cmd = sys.spawn(commander, link, link_id, std::move(schedule), std::move(effects));
     self->send(clock, join_atom_v, cmd,
                participant_info{participant_ids::fault_injector, "commander", phase::faults,
@@ -228,6 +241,53 @@ CAF_TEST(a cut loses everything until the link is healed) {
   CAF_CHECK(c.balanced());
 }
 
+CAF_TEST(a cut and a heal judge a message by when it was sent however late it is read) {
+  // Windows of 3 ticks: what is sent at 18, 19 and 20 reaches the link at 21. The link runs
+  // at 19 for the cut and at 20 for the heal before it reads the messages sent at 18 and 19.
+  link_command cut;
+  cut.op = link_op::cut;
+  link_command heal;
+  heal.op = link_op::heal;
+  build(lossless(), 60, {1, 2, 1, 0, 40}, {{19, cut}, {20, heal}});
+  auto c = run_and_count();
+  std::set<std::int64_t> sent;
+  for (const auto& d : at2->got) sent.insert(d.sent_tick);
+  // On the wire at the cut (sent at 18, read after it) or sent while cut (19): lost.
+  CAF_CHECK_EQUAL(sent.count(18), 0u);
+  CAF_CHECK_EQUAL(sent.count(19), 0u);
+  // Due before the cut whatever the delay (sent by 11): delivered. Sent after the heal: too.
+  for (std::int64_t t = 0; t <= 11; ++t) CAF_CHECK_EQUAL(sent.count(t), 1u);
+  for (std::int64_t t = 20; t < 40; ++t) CAF_CHECK_EQUAL(sent.count(t), 1u);
+  CAF_CHECK_EQUAL(c.delivered, at2->got.size());
+  CAF_CHECK(c.balanced());
+}
+
+CAF_TEST(a loss burst applies to what was sent while it lasted however late it is read) {
+  link_command burst;
+  burst.op = link_op::loss_burst;
+  burst.loss_probability = 1.0;
+  burst.until_tick = 21;
+  build(lossless(), 60, {1, 2, 1, 0, 40}, {{19, burst}});
+  auto c = run_and_count();
+  std::set<std::int64_t> sent;
+  for (const auto& d : at2->got) sent.insert(d.sent_tick);
+  for (std::int64_t t = 0; t < 40; ++t)
+    CAF_CHECK_EQUAL(sent.count(t), t == 19 || t == 20 ? 0u : 1u);
+  CAF_CHECK_EQUAL(c.lost, 2u);
+  CAF_CHECK(c.balanced());
+}
+
+CAF_TEST(messages sent in the last window are counted in flight at the end) {
+  // Sent until the run ends at 50: the windows ending at 47 reach the link; 48 and 49 are
+  // handed over when the run ends, and with everything else not yet due are in flight.
+  build(lossless(), 50, {1, 2, 1, 0, 50});
+  auto c = run_and_count();
+  CAF_CHECK_EQUAL(c.sent, 50u);
+  CAF_CHECK_EQUAL(c.delivered, at2->got.size());
+  CAF_CHECK_GREATER_OR_EQUAL(c.in_flight, 2u);
+  CAF_CHECK(c.balanced());
+}
+
 CAF_TEST(messages to a crashed node are dropped and counted and a recovered node is reachable) {
   link_command down;
   down.op = link_op::node_down;
@@ -246,9 +306,7 @@ CAF_TEST(messages to a crashed node are dropped and counted and a recovered node
     cmd->send_exit(e2, caf::exit_reason::kill);
   };
   effects[40] = [this, fresh](caf::event_based_actor* cmd) {
-    cmd->send(clock, join_atom_v, fresh,
-              participant_info{participant_ids::camera(2), "fresh", phase::cameras,
-                               wake_mode::every_tick});
+    cmd->send(clock, join_atom_v, fresh, endpoint_participant(2, "fresh"));
   };
   build(lossless(), 80, {1, 2, 1, 0, 60}, {{20, down}, {40, back}}, std::move(effects));
   auto c = run_and_count();
