@@ -34,9 +34,11 @@ participant_info camera_participant(const config::camera_settings& camera);
 /// std::vector<net_delivery>)` and `(net_retract_atom, ...)` from its links (docs/network.md);
 /// `(net_originate_atom, mail_stamp, int destination, std::string kind, std::string body, bool
 /// expects_reply)` asks it to send a message (`protocol::broadcast` for all within the hop
-/// limit), read in its turn in canonical order and logged as `net_sent`. It sends one
-/// `net_send_atom` batch per link per tick. Sensing (vision/), the controller FSM of Fig. 10
-/// and the grouping protocol are not in it yet.
+/// limit), read in its turn in canonical order and logged as `net_sent`. What it sends goes
+/// through its outbox (actors/link_outbox.hpp): one `net_send_atom` per link per lookahead
+/// window, and whatever is queued when it crashes (its exit handler) or when the run ends
+/// (`(flush_atom)`, answered with `done_atom`). Sensing (vision/), the controller FSM of
+/// Fig. 10 and the grouping protocol are not in it yet.
 caf::actor spawn_camera_node(caf::actor_system& system, const config::scenario& scenario,
                              const config::camera_settings& camera, link_directory links);
 

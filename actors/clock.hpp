@@ -52,7 +52,9 @@ bool clock_on_own_thread(unsigned threads, std::size_t participants);
 /// on. After the last phase it sends the tick's events, in canonical order, as
 /// `(record_atom, int64 tick, std::vector<sim_event>)` to `recorder`. `progress`, if valid,
 /// receives `(progress_atom, int64 tick, int64 end_tick, double wall_seconds)` every
-/// `progress_interval`.
+/// `progress_interval`. When the run ends it asks each participant that `flushes_at_end` for
+/// `(flush_atom)` and waits for all (they hand their links what they still hold), then each
+/// that `reports_at_end` for `(report_atom, int64 end_tick)`, then closes the recorder.
 caf::actor spawn_clock(caf::actor_system& system, clock_settings settings, caf::actor recorder,
                        caf::actor progress);
 

@@ -30,6 +30,9 @@ struct endpoint {
 struct in_transit {
   int from = 0;
   protocol::net_message message;
+  std::int64_t due = 0;
+  std::uint64_t accepted = 0;  // acceptance order: ties of due tick go by it
+  bool gone = false;           // handed over or dropped: erased after the pass
 };
 
 // Mail to a link: the messages one endpoint sent in one turn, or a command. One inbox for
@@ -63,8 +66,10 @@ struct link_state {
   bool reorder = false;
   std::int64_t lookahead = 1;
   ordered_inbox<link_input> inbox;
-  // Pending deliveries by due tick, each tick's in order of acceptance: a deterministic order.
-  std::map<std::int64_t, std::vector<in_transit>> pending;
+  // Pending deliveries, in no order: a hand-over sorts what it takes by (due, accepted), a
+  // deterministic order. One vector whose capacity stays: no allocation per message.
+  std::vector<in_transit> pending;
+  std::uint64_t accepted = 0;
   std::deque<handed_over> handed;              // in order of due tick
   std::array<std::int64_t, 2> last_due{0, 0};  // per direction, for FIFO delivery
   // Sent before this tick and the link was, or later got, cut: lost. Max while cut; the heal's
@@ -138,8 +143,7 @@ void apply(link_actor* self, std::int64_t tick, const link_command& cmd) {
       for (const auto& e : st.ends)
         if (e.up) self->send(e.handle, net_retract_atom_v, st.info.id, tick);
       recount_handed(st, 2, tick, /*as_lost=*/true);
-      for (auto& [due, list] : st.pending)
-        for (auto& t : list) ++st.counter(t.message.kind).lost;
+      for (auto& t : st.pending) ++st.counter(t.message.kind).lost;
       st.pending.clear();
       break;
     case link_op::heal:
@@ -153,7 +157,8 @@ void apply(link_actor* self, std::int64_t tick, const link_command& cmd) {
 
 // `sent_tick` is when the endpoint sent it: the delay counts from then, and a cut or a loss
 // burst applies by it. One draw set per message whatever its fate.
-void accept(link_state& st, std::int64_t sent_tick, in_transit t) {
+void accept(link_state& st, std::int64_t sent_tick, int from, protocol::net_message message) {
+  in_transit t{from, std::move(message)};
   auto& c = st.counter(t.message.kind);
   ++c.sent;
   auto fate = st.model->draw(st.loss_at(sent_tick));
@@ -169,10 +174,14 @@ void accept(link_state& st, std::int64_t sent_tick, in_transit t) {
   st.last_due[direction] = due;
   if (fate.duplicated) {
     ++c.duplicated;
-    auto dup_due = std::max(due, sent_tick + fate.duplicate_delay_ticks);
-    st.pending[dup_due].push_back(t);
+    auto dup = t;
+    dup.due = std::max(due, sent_tick + fate.duplicate_delay_ticks);
+    dup.accepted = st.accepted++;
+    st.pending.push_back(std::move(dup));
   }
-  st.pending[due].push_back(std::move(t));
+  t.due = due;
+  t.accepted = st.accepted++;
+  st.pending.push_back(std::move(t));
 }
 
 // Hands over everything due before tick + lookahead: nothing sent from now on can be due that
@@ -184,33 +193,31 @@ void hand_over(link_actor* self, tick_context& ctx) {
   auto& st = self->state;
   auto tick = ctx.tick();
   auto horizon = tick + st.lookahead;
+  auto ready_end = std::partition(st.pending.begin(), st.pending.end(),
+                                  [&](const in_transit& t) { return t.due < horizon; });
+  std::sort(st.pending.begin(), ready_end, [](const in_transit& a, const in_transit& b) {
+    return std::tie(a.due, a.accepted) < std::tie(b.due, b.accepted);
+  });
   std::array<std::vector<net_delivery>, 2> out;
-  for (auto it = st.pending.begin(); it != st.pending.end() && it->first < horizon;) {
-    auto due = it->first;
-    auto& list = it->second;
-    std::vector<in_transit> kept;
-    for (auto& t : list) {
-      auto to = 1 - end_of(st, t.from);
-      auto& c = st.counter(t.message.kind);
-      if (!st.ends[to].up) {
-        if (due <= tick)
-          ++c.dropped;
-        else
-          kept.push_back(std::move(t));
-        continue;
+  for (auto it = st.pending.begin(); it != ready_end; ++it) {
+    auto& t = *it;
+    auto to = 1 - end_of(st, t.from);
+    auto& c = st.counter(t.message.kind);
+    if (!st.ends[to].up) {
+      if (t.due <= tick) {
+        ++c.dropped;
+        t.gone = true;
       }
-      ++c.delivered;
-      if (due > tick) st.handed.push_back(handed_over{due, to, st.last_kind, &c});
-      ++t.message.hops;
-      out[to].push_back(net_delivery{due, std::move(t.message)});
+      continue;
     }
-    if (kept.empty()) {
-      it = st.pending.erase(it);
-    } else {
-      list = std::move(kept);
-      ++it;
-    }
+    ++c.delivered;
+    if (t.due > tick) st.handed.push_back(handed_over{t.due, to, st.last_kind, &c});
+    ++t.message.hops;
+    if (out[to].empty()) out[to].reserve(static_cast<std::size_t>(ready_end - it));
+    out[to].push_back(net_delivery{t.due, std::move(t.message)});
+    t.gone = true;
   }
+  std::erase_if(st.pending, [](const in_transit& t) { return t.gone; });
   for (std::size_t to = 0; to < 2; ++to) {
     if (out[to].empty()) continue;
     const auto& end = st.ends[to];
@@ -258,14 +265,13 @@ caf::behavior link(link_actor* self, participant_info info, config::network_sett
             apply(self, tick, *input.command);
             continue;
           }
-          for (auto& m : input.messages)
-            accept(st, stamp.tick, in_transit{input.from, std::move(m)});
+          for (auto& m : input.messages) accept(st, stamp.tick, input.from, std::move(m));
         }
         while (!st.handed.empty() && st.handed.front().due <= tick) st.handed.pop_front();
         hand_over(self, ctx);
         // Nothing due before the horizon is left but for nodes that are down, so the next
         // hand-over is a lookahead later at the soonest; a node's own send wakes us as well.
-        if (!st.pending.empty()) ctx.wake_at(st.pending.begin()->first);
+        for (const auto& t : st.pending) ctx.wake_at(t.due);
         forget_bursts(st, tick);
         self->send(caf::actor_cast<caf::actor>(self->current_sender()), std::move(ctx).finish());
       },
@@ -278,8 +284,7 @@ caf::behavior link(link_actor* self, participant_info info, config::network_sett
             ++counts[m.kind].sent;
             ++counts[m.kind].in_flight;
           }
-        for (const auto& [due, list] : st.pending)
-          for (const auto& t : list) ++counts[t.message.kind].in_flight;
+        for (const auto& t : st.pending) ++counts[t.message.kind].in_flight;
         // Handed over but due after the run: the node never read them.
         for (const auto& h : st.handed) {
           if (h.due < end_tick) continue;

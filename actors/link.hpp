@@ -16,9 +16,11 @@ participant_info link_participant(std::size_t index, int a, int b);
 /// Spawns the actor of the link between cameras `a` and `b` (docs/network.md).
 ///
 /// Mail it reads (each stamped, read in canonical order):
-/// - `(net_send_atom, mail_stamp, int from_node, std::vector<net_message>)` from an endpoint,
-///   everything it sends on this link in one turn: each message is lost (probability
-///   `loss_probability`, or all of it while the link is cut), or delivered after a delay drawn
+/// - `(net_send_atom, int from_node, std::vector<net_send_batch>)` from an endpoint's outbox
+///   (actors/link_outbox.hpp), what it sent on this link in each turn of a window, each batch
+///   with that turn's stamp. Each message is lost (probability `loss_probability`, a loss
+///   burst's if sent during one, always if sent while the link was cut or on the wire when it
+///   was cut, judged by send tick however late it is read), or delivered after a delay drawn
 ///   uniformly in [min_delay, max_delay] and rounded up to whole ticks; FIFO per direction unless
 ///   the scenario sets `reorder`; duplicated with `duplicate_probability`.
 /// - `(link_cmd_atom, mail_stamp, link_command)`: attach a node's actor, node down, cut, heal,

@@ -38,6 +38,17 @@ class ordered_inbox {
 
   /// Removes and returns, in canonical order, all mail sent before (`tick`, `phase`).
   std::vector<std::pair<mail_stamp, Payload>> take_due(std::int64_t tick, std::uint8_t phase) {
+    auto before = [&](const auto& m) {
+      return std::tie(m.first.tick, m.first.phase) < std::tie(tick, phase);
+    };
+    if (std::all_of(mail_.begin(), mail_.end(), before)) {
+      // The common case: everything held is due. Hand over the storage itself.
+      std::vector<std::pair<mail_stamp, Payload>> due;
+      due.swap(mail_);
+      std::sort(due.begin(), due.end(),
+                [](const auto& a, const auto& b) { return a.first < b.first; });
+      return due;
+    }
     auto due_end = std::partition(mail_.begin(), mail_.end(), [&](const auto& m) {
       return std::tie(m.first.tick, m.first.phase) < std::tie(tick, phase);
     });

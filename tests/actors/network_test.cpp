@@ -204,6 +204,19 @@ CAF_TEST(an unanswered request marks its peer failed after the message timeout) 
   CAF_CHECK_EQUAL(failed.front().tick, 75 + 23);
 }
 
+CAF_TEST(what a camera sent before it crashed still reaches its neighbours) {
+  auto s = line_of_six();
+  config::fault crash;
+  crash.at = config::seconds{61.0 / 15.0};  // tick 61
+  crash.kind = config::fault_kind::crash;
+  crash.camera = 2;
+  s.faults = {crash};
+  // Sent at tick 60, the first of a lookahead window (60 to 62): still in camera 2's outbox
+  // when it crashes at 61, and on the wire all the same.
+  run_network(s, 100, {{60, {2, protocol::broadcast, "note", false}}});
+  CAF_CHECK_EQUAL(receivers(2, "note"), (std::set<int>{1, 3, 4, 5}));
+}
+
 CAF_TEST(neighbours are given up after a crash and found again after recovery) {
   auto s = line_of_six();
   config::fault outage;
