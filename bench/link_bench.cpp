@@ -1,7 +1,8 @@
 // Messages per second through the link layer (issue #6): N nodes in a random geometric graph
 // with mean degree about 8; every node sends K messages per tick on each of its links (K = 1:
-// the worst case for per-tick batching; K = 8: a burst such as a query to every neighbour
-// plus forwarding); links draw Table 2 delay and loss and deliver. 1 and 2 scheduler threads.
+// the worst case for batching; K = 2, 4, 8: bursts such as a query to every neighbour plus
+// forwarding) through an outbox, as camera nodes do; links draw Table 2 delay and loss and
+// deliver. 1 and 2 scheduler threads; with 2, the clock on a worker and on its own thread.
 //
 //   build/bench/link_bench --benchmark_counters_tabular=true
 
@@ -168,7 +169,7 @@ void bm_links(benchmark::State& state) {
 
 // With 2 workers, the clock on a worker (clock_thread 0) and on its own thread (1).
 void link_args(benchmark::internal::Benchmark* b) {
-  for (int burst : {1, 8})
+  for (int burst : {1, 2, 4, 8})
     for (int threads : {1, 2})
       for (int own : {0, 1})
         for (int nodes : {100, 1000, 10000})

@@ -204,6 +204,25 @@ CAF_TEST(an unanswered request marks its peer failed after the message timeout) 
   CAF_CHECK_EQUAL(failed.front().tick, 75 + 23);
 }
 
+CAF_TEST(a cut link partitions the network and a heal reunites it) {
+  auto s = line_of_six();
+  config::fault cut;
+  cut.at = config::seconds{1.0};  // tick 15
+  cut.kind = config::fault_kind::link_cut;
+  cut.camera = 3;
+  cut.peer = 4;
+  auto heal = cut;
+  heal.at = config::seconds{4.0};  // tick 60: 45 ticks, within the neighbour timeout (75)
+  heal.kind = config::fault_kind::link_heal;
+  s.faults = {cut, heal};
+  // The line 1-2-3-4-5-6 has no other way round: cut between 3 and 4, camera 1's broadcast
+  // (3 hops) stops at 3; healed, it reaches 4 again.
+  run_network(s, 120, {{30, {1, protocol::broadcast, "cut", false}},
+                       {70, {1, protocol::broadcast, "healed", false}}});
+  CAF_CHECK_EQUAL(receivers(1, "cut"), (std::set<int>{2, 3}));
+  CAF_CHECK_EQUAL(receivers(1, "healed"), (std::set<int>{2, 3, 4}));
+}
+
 CAF_TEST(what a camera sent before it crashed still reaches its neighbours) {
   auto s = line_of_six();
   config::fault crash;
