@@ -217,8 +217,9 @@ CAF_TEST(a cut link partitions the network and a heal reunites it) {
   s.faults = {cut, heal};
   // The line 1-2-3-4-5-6 has no other way round: cut between 3 and 4, camera 1's broadcast
   // (3 hops) stops at 3; healed, it reaches 4 again.
-  run_network(s, 120, {{30, {1, protocol::broadcast, "cut", false}},
-                       {70, {1, protocol::broadcast, "healed", false}}});
+  run_network(s, 120,
+              {{30, {1, protocol::broadcast, "cut", false}},
+               {70, {1, protocol::broadcast, "healed", false}}});
   CAF_CHECK_EQUAL(receivers(1, "cut"), (std::set<int>{2, 3}));
   CAF_CHECK_EQUAL(receivers(1, "healed"), (std::set<int>{2, 3, 4}));
 }
