@@ -36,14 +36,18 @@ struct camera_node_state {
   // link once per lookahead window (docs/network.md, "Outbox").
   link_outbox outbox{1};
   std::uint64_t mail_seq = 0;
+  // The last turn taken: what a flush outside a turn (crash, end of run) is stamped with.
+  mail_stamp last_turn{-1, static_cast<std::uint8_t>(phase::cameras), 0, 0};
 };
 
 using node_actor = caf::stateful_actor<camera_node_state>;
 
+// In a turn (`ctx` given) the hand-overs the links owe for it are announced to the clock;
+// outside one (a crash, the end of the run) nobody waits for them.
 void hand_to_links(node_actor* self, tick_context* ctx) {
-  self->state.outbox.flush(self, self->state.camera_id, [&](std::uint64_t link) {
-    if (ctx != nullptr) ctx->sent_mail_to(link);
-  });
+  auto& st = self->state;
+  st.outbox.flush(self, st.camera_id, st.last_turn, ctx != nullptr,
+                  [&](std::uint64_t peer) { ctx->relayed_to(peer); });
 }
 
 std::vector<int> neighbours_of(const link_directory& links) {
@@ -63,7 +67,8 @@ void flush_network(node_actor* self, tick_context& ctx) {
     if (it == st.links.end()) continue;
     mail_stamp stamp{ctx.tick(), static_cast<std::uint8_t>(phase::cameras), st.info.id,
                      st.mail_seq++};
-    st.outbox.add(it->second.participant, it->second.handle, stamp, std::move(batch));
+    st.outbox.add(it->second.participant, it->second.handle, participant_ids::camera(neighbour),
+                  stamp, std::move(batch));
   }
   if (st.outbox.window_ends(ctx.tick())) hand_to_links(self, &ctx);
   for (const auto& change : st.network->take_changes())
@@ -72,6 +77,39 @@ void flush_network(node_actor* self, tick_context& ctx) {
   for (const auto& f : st.network->take_failures())
     ctx.emit("peer_failed",
              fmt::format(R"("camera":{},"peer":{},"request":"{}")", st.camera_id, f.peer, f.kind));
+}
+
+void take_turn(node_actor* self, std::int64_t tick, std::uint8_t p, const caf::actor& clock) {
+  auto& st = self->state;
+  st.last_turn = mail_stamp{tick, p, st.info.id, 0};
+  tick_context ctx(st.info.id, st.info.name, tick, st.info.tick_phase);
+  if (!st.announced) {
+    st.announced = true;
+    ctx.emit("node_up",
+             fmt::format(R"("camera":{},"type":"{}")", st.camera_id, st.ptz ? "ptz" : "static"));
+  }
+  for (auto& [stamp, a] : st.arrivals.take_due(tick, p))
+    st.network->receive(tick, a.from, a.message);
+  for (const auto& m : st.network->take_delivered()) {
+    // A liveness probe any node may send; the controller's messages come with it.
+    if (m.kind == "ping") st.network->reply(m, "pong", {});
+    ctx.emit("net_received", fmt::format(R"("camera":{},"origin":{},"message":"{}","hops":{})",
+                                         st.camera_id, m.origin, m.kind, m.hops));
+  }
+  for (auto& [stamp, o] : st.to_originate.take_due(tick, p)) {
+    auto id = o.expects_reply ? st.network->request(tick, o.destination, o.kind, std::move(o.body))
+                              : st.network->send(o.destination, o.kind, std::move(o.body));
+    ctx.emit("net_sent", fmt::format(R"("camera":{},"destination":{},"message":"{}","id":{})",
+                                     st.camera_id, o.destination, o.kind, id));
+  }
+  st.network->tick(tick);
+  flush_network(self, ctx);
+  self->send(clock, std::move(ctx).finish());
+}
+
+// A turn waits until every hand-over the clock announced for it has come (docs/network.md).
+void take_turn_when_ready(node_actor* self) {
+  if (auto t = self->state.arrivals.take_ready()) take_turn(self, t->tick, t->phase, t->clock);
 }
 
 caf::behavior camera_node(node_actor* self, const config::scenario& scenario,
@@ -96,8 +134,11 @@ caf::behavior camera_node(node_actor* self, const config::scenario& scenario,
         hand_to_links(self, nullptr);
         return done_atom_v;
       },
-      [self](net_deliver_atom, const mail_stamp& stamp, int from,
-             std::vector<net_delivery>& batch) { self->state.arrivals.put(stamp, from, batch); },
+      [self](net_deliver_atom, const mail_stamp& stamp, bool announced, int from,
+             std::vector<net_delivery>& batch) {
+        self->state.arrivals.put(stamp, announced, from, batch);
+        take_turn_when_ready(self);
+      },
       [self](net_retract_atom, std::uint64_t link, std::int64_t from_due) {
         self->state.arrivals.retract(link, from_due);
       },
@@ -106,33 +147,10 @@ caf::behavior camera_node(node_actor* self, const config::scenario& scenario,
         self->state.to_originate.put(
             stamp, origination{destination, std::move(kind), std::move(body), expects_reply});
       },
-      [self](tick_atom, std::int64_t tick, std::uint8_t p) {
+      [self](tick_atom, std::int64_t tick, std::uint8_t p, std::uint32_t relayed) {
         auto& st = self->state;
-        tick_context ctx(st.info.id, st.info.name, tick, st.info.tick_phase);
-        if (!st.announced) {
-          st.announced = true;
-          ctx.emit("node_up", fmt::format(R"("camera":{},"type":"{}")", st.camera_id,
-                                          st.ptz ? "ptz" : "static"));
-        }
-        for (auto& [stamp, a] : st.arrivals.take_due(tick, p))
-          st.network->receive(tick, a.from, a.message);
-        for (const auto& m : st.network->take_delivered()) {
-          // A liveness probe any node may send; the controller's messages come with it.
-          if (m.kind == "ping") st.network->reply(m, "pong", {});
-          ctx.emit("net_received",
-                   fmt::format(R"("camera":{},"origin":{},"message":"{}","hops":{})", st.camera_id,
-                               m.origin, m.kind, m.hops));
-        }
-        for (auto& [stamp, o] : st.to_originate.take_due(tick, p)) {
-          auto id = o.expects_reply
-                        ? st.network->request(tick, o.destination, o.kind, std::move(o.body))
-                        : st.network->send(o.destination, o.kind, std::move(o.body));
-          ctx.emit("net_sent", fmt::format(R"("camera":{},"destination":{},"message":"{}","id":{})",
-                                           st.camera_id, o.destination, o.kind, id));
-        }
-        st.network->tick(tick);
-        flush_network(self, ctx);
-        self->send(caf::actor_cast<caf::actor>(self->current_sender()), std::move(ctx).finish());
+        st.arrivals.hold({tick, p, caf::actor_cast<caf::actor>(self->current_sender())}, relayed);
+        take_turn_when_ready(self);
       },
   };
 }

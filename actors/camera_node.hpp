@@ -30,8 +30,9 @@ participant_info camera_participant(const config::camera_settings& camera);
 /// Today the node announces itself (`node_up`) on its first tick and runs its network side
 /// (`protocol::node_network`): hello beacons, neighbour discovery (`neighbour_up`,
 /// `neighbour_lost` events), multi-hop forwarding, answers to `ping`, request time-outs
-/// (`peer_failed`). Mail: `(net_deliver_atom, mail_stamp, int from_node,
+/// (`peer_failed`). Mail: `(net_deliver_atom, mail_stamp, bool announced, int from_node,
 /// std::vector<net_delivery>)` and `(net_retract_atom, ...)` from its links (docs/network.md);
+/// a tick waits for the hand-overs the clock announces with it;
 /// `(net_originate_atom, mail_stamp, int destination, std::string kind, std::string body, bool
 /// expects_reply)` asks it to send a message (`protocol::broadcast` for all within the hop
 /// limit), read in its turn in canonical order and logged as `net_sent`. What it sends goes

@@ -10,6 +10,7 @@
 
 #include "actors/phase.hpp"
 #include "actors/type_ids.hpp"
+#include "fmt/format.h"
 #include "spdlog/spdlog.h"
 
 namespace argus::actors {
@@ -70,6 +71,8 @@ class clock_actor : public caf::event_based_actor {
     std::int64_t booked = -1;
     /// Ticked in the current phase and not yet acknowledged.
     bool awaited = false;
+    /// Hand-overs relays (links) owe it, announced since its last tick.
+    std::uint32_t relayed = 0;
   };
 
   static std::size_t index(phase p) { return static_cast<std::size_t>(p); }
@@ -95,7 +98,7 @@ class clock_actor : public caf::event_based_actor {
       if (e.info.mode == wake_mode::every_tick) {
         auto& ids = every_tick_[index(e.info.tick_phase)];
         ids.insert(std::lower_bound(ids.begin(), ids.end(), id), id);
-      } else {
+      } else if (e.info.mode == wake_mode::on_demand) {
         book(id, tick_);
       }
     }
@@ -125,7 +128,10 @@ class clock_actor : public caf::event_based_actor {
       apply_joins();  // joins sent from inside a tick precede their sender's ack
       collect_due();
       if (awaiting_ > 0) {
-        for (auto* e : due_) send(e->handle, tick_atom_v, tick_, static_cast<std::uint8_t>(phase_));
+        for (auto* e : due_) {
+          send(e->handle, tick_atom_v, tick_, static_cast<std::uint8_t>(phase_), e->relayed);
+          e->relayed = 0;
+        }
         return;
       }
       ++phase_;
@@ -173,21 +179,25 @@ class clock_actor : public caf::event_based_actor {
     }
     for (auto& ev : ack.events) batch_.push_back(std::move(ev));
     if (ack.next_wakeup != no_wakeup) book(ack.participant, std::max(ack.next_wakeup, tick_ + 1));
-    for (std::size_t i = 0; i < ack.woken.size(); ++i) {
-      auto id = ack.woken[i];
-      auto target = participants_.find(id);
-      if (target == participants_.end()) continue;
-      // Mail for a later phase is read this tick; for this or an earlier phase, next tick.
-      auto later = index(target->second.info.tick_phase) > phase_;
-      auto at = later ? tick_ : tick_ + 1;
-      if (i < ack.woken_not_before.size()) at = std::max(at, ack.woken_not_before[i]);
-      book(id, at);
-    }
+    for (auto id : ack.woken) wake_for_mail(id);
+    // A receiver that is gone (crashed, retired) is owed nothing: its links know it is down.
+    for (auto id : ack.relayed)
+      if (auto* target = wake_for_mail(id)) ++target->relayed;
     it->second.awaited = false;
     if (--awaiting_ == 0) {
       ++phase_;
       run_phases();
     }
+  }
+
+  // Books participant `id` to read mail sent in this phase: this tick if its phase comes later,
+  // else the next. Returns its entry, or nullptr if it is not (or no longer) a participant.
+  entry* wake_for_mail(std::uint64_t id) {
+    auto target = participants_.find(id);
+    if (target == participants_.end()) return nullptr;
+    auto later = index(target->second.info.tick_phase) > phase_;
+    book(id, later ? tick_ : tick_ + 1);
+    return &target->second;
   }
 
   void on_down(const caf::down_msg& msg) {
@@ -207,6 +217,18 @@ class clock_actor : public caf::event_based_actor {
     if (retired_.erase(id) != 0) return;  // already dropped when it was retired
     if (participants_.count(id) == 0) return;
     auto name = participants_[id].info.name;
+    if (participants_[id].info.mode == wake_mode::never) {
+      // A relay that died owes hand-overs that will never come: the receivers would wait for
+      // them forever, so the run ends here, saying why, rather than stall.
+      auto why = fmt::format(
+          "{} stopped unexpectedly at tick {} ({}); the network cannot "
+          "deliver what it owes",
+          name, tick_, to_string(msg.reason));
+      spdlog::error("clock: {}", why);
+      if (promise_.pending()) promise_.deliver(caf::make_error(caf::sec::runtime_error, why));
+      shut_down();
+      return;
+    }
     spdlog::warn(
         "clock: participant {} died unexpectedly at tick {} ({}); dropped from the barrier", name,
         tick_, to_string(msg.reason));
@@ -291,8 +313,9 @@ class clock_actor : public caf::event_based_actor {
     report_progress(true);
     result_.ticks = tick_;
     result_.virtual_seconds = static_cast<double>(tick_) * settings_.tick_seconds;
-    result_.wall_seconds = wall_seconds(clock().now());
     result_.participants = joined_;
+    // Wall time is taken when the links have reported (close_recorder): the end-of-run flush
+    // is work the run did.
     result_.unexpected_down = unexpected_down_;
     // Senders hand over what they still hold before the links count what is in flight.
     for (auto& [id, e] : participants_) {
@@ -329,6 +352,7 @@ class clock_actor : public caf::event_based_actor {
   }
 
   void close_recorder() {
+    result_.wall_seconds = wall_seconds(clock().now());
     request(recorder_, caf::infinite, done_atom_v, std::move(result_))
         .then(
             [this](run_result& final_result) {

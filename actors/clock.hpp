@@ -46,15 +46,20 @@ bool clock_on_own_thread(unsigned threads, std::size_t participants);
 ///   it leaves the barrier at once and its death is not reported as unexpected.
 /// - `tick_ack` from participants, `(recorded_atom, int64 tick)` from the recorder.
 ///
-/// Each tick, for each phase in order, it sends `(tick_atom, int64 tick, uint8 phase)` to
-/// every participant due in that phase and waits for all their `tick_ack`s. It monitors every
-/// participant: one that dies is dropped from the barrier at once, logged, and the run goes
-/// on. After the last phase it sends the tick's events, in canonical order, as
-/// `(record_atom, int64 tick, std::vector<sim_event>)` to `recorder`. `progress`, if valid,
-/// receives `(progress_atom, int64 tick, int64 end_tick, double wall_seconds)` every
+/// Each tick, for each phase in order, it sends `(tick_atom, int64 tick, uint8 phase, uint32
+/// relayed)` to every participant due in that phase and waits for all their `tick_ack`s;
+/// `relayed` is the number of hand-overs from relays (links) announced for that participant
+/// since its last tick (`tick_ack::relayed`), which it waits for before it acts. Participants
+/// that join with `wake_mode::never` (links) are never ticked. It monitors every participant:
+/// one that dies is dropped from the barrier at once, logged, and the run goes on — unless it
+/// is a relay (`wake_mode::never`), whose receivers would wait forever: then the run fails
+/// with an error naming it. After the last phase it sends the tick's events, in canonical
+/// order, as `(record_atom, int64 tick, std::vector<sim_event>)` to `recorder`. `progress`,
+/// if valid, receives `(progress_atom, int64 tick, int64 end_tick, double wall_seconds)` every
 /// `progress_interval`. When the run ends it asks each participant that `flushes_at_end` for
 /// `(flush_atom)` and waits for all (they hand their links what they still hold), then each
-/// that `reports_at_end` for `(report_atom, int64 end_tick)`, then closes the recorder.
+/// that `reports_at_end` for `(report_atom, int64 end_tick)`, then closes the recorder. The
+/// run's wall time runs from `start_atom` until the last report is in.
 caf::actor spawn_clock(caf::actor_system& system, clock_settings settings, caf::actor recorder,
                        caf::actor progress);
 

@@ -32,7 +32,7 @@ caf::behavior crowd_partition(caf::stateful_actor<crowd_partition_state>* self,
       [self](world_update_atom, const mail_stamp& stamp, world_update& update) {
         self->state.updates.put(stamp, std::move(update));
       },
-      [self](tick_atom, std::int64_t tick, std::uint8_t p) {
+      [self](tick_atom, std::int64_t tick, std::uint8_t p, std::uint32_t) {
         auto& st = self->state;
         tick_context ctx(st.info.id, st.info.name, tick, st.info.tick_phase);
         for (auto& [stamp, update] : st.updates.take_due(tick, p)) {

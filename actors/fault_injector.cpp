@@ -35,10 +35,15 @@ struct injector_state {
   std::mt19937_64 rng;
   double failure_per_tick = 0.0;
   std::uint64_t mail_seq = 0;
-  // Cameras crashed this turn that have not ended yet, and the ack held until they have: a
-  // dying camera hands its links what it had sent (actors/link_outbox.hpp), and the links
-  // must have it before they run again.
+  // This turn's commands to links, sent once the cameras crashed in it have ended: a dying
+  // camera hands its links what it had sent (actors/link_outbox.hpp), and a link must read
+  // that before any command of the turn, whatever the threads do. The ack is held until every
+  // link has answered (its effects — hand-overs, retractions — then sit in the nodes'
+  // mailboxes before their turn).
   std::set<caf::actor_addr> dying;
+  std::vector<std::pair<caf::actor, link_command>> commands;
+  std::size_t answers_pending = 0;
+  std::int64_t tick = 0;
   std::optional<tick_ack> held_ack;
 };
 
@@ -48,30 +53,48 @@ std::int64_t to_tick(config::seconds at, config::seconds tick) {
   return static_cast<std::int64_t>(std::llround(at / tick));
 }
 
-void tell_links(injector* self, tick_context& ctx, int camera, link_command cmd) {
+void tell_links(injector* self, int camera, const link_command& cmd) {
   auto& st = self->state;
   auto it = st.net.links.find(camera);
   if (it == st.net.links.end()) return;
-  for (const auto& [neighbour, link] : it->second) {
-    mail_stamp stamp{ctx.tick(), static_cast<std::uint8_t>(phase::faults), st.info.id,
-                     st.mail_seq++};
-    self->send(link.handle, link_cmd_atom_v, stamp, cmd);
-    ctx.sent_mail_to(link.participant);
-  }
+  for (const auto& [neighbour, link] : it->second) st.commands.emplace_back(link.handle, cmd);
 }
 
-void tell_link(injector* self, tick_context& ctx, int a, int b, link_command cmd) {
+void tell_link(injector* self, int a, int b, const link_command& cmd) {
   auto& st = self->state;
   auto it = st.net.links.find(a);
   if (it == st.net.links.end()) return;
   auto link = it->second.find(b);
   if (link == it->second.end()) return;
-  mail_stamp stamp{ctx.tick(), static_cast<std::uint8_t>(phase::faults), st.info.id, st.mail_seq++};
-  self->send(link->second.handle, link_cmd_atom_v, stamp, std::move(cmd));
-  ctx.sent_mail_to(link->second.participant);
+  st.commands.emplace_back(link->second.handle, cmd);
 }
 
-bool crash(injector* self, tick_context& ctx, int camera) {
+// Acknowledges the turn once no camera of it is still dying and every link has answered.
+void ack_when_done(injector* self) {
+  auto& st = self->state;
+  if (!st.dying.empty() || st.answers_pending > 0 || !st.held_ack) return;
+  self->send(st.clock, std::move(*st.held_ack));
+  st.held_ack.reset();
+}
+
+// Sends the turn's link commands in the order they were made, once the crashed are gone.
+void send_commands(injector* self) {
+  auto& st = self->state;
+  if (!st.dying.empty()) return;
+  for (auto& [link, cmd] : st.commands) {
+    mail_stamp stamp{st.tick, static_cast<std::uint8_t>(phase::faults), st.info.id, st.mail_seq++};
+    ++st.answers_pending;
+    auto answered = [self] {
+      --self->state.answers_pending;
+      ack_when_done(self);
+    };
+    self->request(link, caf::infinite, link_cmd_atom_v, stamp, std::move(cmd))
+        .then([answered](done_atom) { answered(); }, [answered](caf::error&) { answered(); });
+  }
+  st.commands.clear();
+}
+
+bool crash(injector* self, int camera) {
   auto& st = self->state;
   auto it = st.net.cameras.find(camera);
   if (it == st.net.cameras.end() || !it->second) return false;  // already down
@@ -85,11 +108,11 @@ bool crash(injector* self, tick_context& ctx, int camera) {
   link_command cmd;
   cmd.op = link_op::node_down;
   cmd.node = camera;
-  tell_links(self, ctx, camera, cmd);
+  tell_links(self, camera, cmd);
   return true;
 }
 
-bool recover(injector* self, tick_context& ctx, int camera) {
+bool recover(injector* self, int camera) {
   auto& st = self->state;
   auto& slot = st.net.cameras[camera];
   if (slot) return false;  // it did not go down, or is already back
@@ -101,7 +124,7 @@ bool recover(injector* self, tick_context& ctx, int camera) {
     cmd.op = link_op::attach;
     cmd.node = camera;
     cmd.handle = slot;
-    tell_links(self, ctx, camera, cmd);
+    tell_links(self, camera, cmd);
     return true;
   }
   return false;
@@ -111,7 +134,7 @@ void perform(injector* self, tick_context& ctx, const planned& p) {
   auto& st = self->state;
   const auto& f = st.scenario.faults[p.fault];
   if (p.recovery) {
-    bool applied = recover(self, ctx, f.camera);
+    bool applied = recover(self, f.camera);
     ctx.emit("node_recovered", fmt::format(R"("camera":{},"applied":{})", f.camera, applied));
     return;
   }
@@ -121,21 +144,21 @@ void perform(injector* self, tick_context& ctx, const planned& p) {
   switch (f.kind) {
     case config::fault_kind::crash:
     case config::fault_kind::crash_and_recover:
-      applied = crash(self, ctx, f.camera);
+      applied = crash(self, f.camera);
       break;
     case config::fault_kind::link_cut:
       cmd.op = link_op::cut;
-      tell_link(self, ctx, f.camera, *f.peer, cmd);
+      tell_link(self, f.camera, *f.peer, cmd);
       break;
     case config::fault_kind::link_heal:
       cmd.op = link_op::heal;
-      tell_link(self, ctx, f.camera, *f.peer, cmd);
+      tell_link(self, f.camera, *f.peer, cmd);
       break;
     case config::fault_kind::loss_burst:
       cmd.op = link_op::loss_burst;
       cmd.loss_probability = f.loss_probability;
       cmd.until_tick = ctx.tick() + to_tick(f.length, st.scenario.run.tick);
-      tell_links(self, ctx, f.camera, cmd);
+      tell_links(self, f.camera, cmd);
       break;
   }
   auto peer = f.peer ? fmt::format(R"(,"peer":{})", *f.peer) : std::string{};
@@ -150,7 +173,7 @@ void random_failures(injector* self, tick_context& ctx) {
   for (auto& [camera, handle] : st.net.cameras) {
     // One draw per camera per tick, alive or not, so one failure never shifts the others.
     bool fails = unit(st.rng) < st.failure_per_tick;
-    if (fails && handle && crash(self, ctx, camera))
+    if (fails && handle && crash(self, camera))
       ctx.emit("fault",
                fmt::format(R"("fault":"crash","camera":{},"random":true,"applied":true)", camera));
   }
@@ -182,23 +205,22 @@ caf::behavior fault_injector(injector* self, config::scenario scenario, caf::act
   st.clock = std::move(clock);
   st.net = std::move(net);
   self->set_down_handler([self](caf::down_msg& msg) {
-    auto& st = self->state;
-    if (st.dying.erase(msg.source) == 0 || !st.dying.empty() || !st.held_ack) return;
-    self->send(st.clock, std::move(*st.held_ack));
-    st.held_ack.reset();
+    if (self->state.dying.erase(msg.source) == 0) return;
+    send_commands(self);
+    ack_when_done(self);
   });
   return {
-      [self](tick_atom, std::int64_t tick, std::uint8_t) {
+      [self](tick_atom, std::int64_t tick, std::uint8_t, std::uint32_t) {
         auto& st = self->state;
+        st.tick = tick;
         tick_context ctx(st.info.id, st.info.name, tick, st.info.tick_phase);
         while (st.next < st.plan.size() && st.plan[st.next].tick <= tick)
           perform(self, ctx, st.plan[st.next++]);
         random_failures(self, ctx);
         if (st.next < st.plan.size()) ctx.wake_at(st.plan[st.next].tick);
-        if (st.dying.empty())
-          self->send(st.clock, std::move(ctx).finish());
-        else
-          st.held_ack = std::move(ctx).finish();
+        st.held_ack = std::move(ctx).finish();
+        send_commands(self);
+        ack_when_done(self);
       },
   };
 }

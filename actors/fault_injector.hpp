@@ -35,8 +35,11 @@ participant_info fault_injector_participant(const config::scenario& scenario);
 ///   actor, joins it to the clock and attaches it to its links (`node_recovered`);
 /// - `link_cut` / `link_heal`: cuts or heals the link between `camera` and `peer`;
 /// - `loss_burst`: sets every link of `camera` to `loss_probability` for `length`.
-/// Every action is logged as a `fault` event. Camera nodes are told nothing: they learn of
-/// failures only through silence (node_network).
+/// Every action is logged as a `fault` event. Commands to links are requests, sent in the
+/// order they were made once the turn's crashed cameras have ended, and the injector's
+/// acknowledgement waits for every answer: a link's effects on the nodes (hand-overs,
+/// retractions) are then in their mailboxes before their turn. Camera nodes are told nothing:
+/// they learn of failures only through silence (node_network).
 caf::actor spawn_fault_injector(caf::actor_system& system, const config::scenario& scenario,
                                 caf::actor clock, network_directory directory);
 

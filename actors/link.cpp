@@ -1,18 +1,14 @@
 #include "actors/link.hpp"
 
 #include <algorithm>
-#include <deque>
+#include <array>
 #include <limits>
-#include <map>
-#include <optional>
-#include <tuple>
+#include <memory>
 #include <vector>
 
 #include "actors/net_delivery.hpp"
 #include "actors/net_send_batch.hpp"
-#include "actors/ordered_inbox.hpp"
 #include "actors/participant_ids.hpp"
-#include "actors/tick_context.hpp"
 #include "actors/type_ids.hpp"
 #include "config/derive_seed.hpp"
 #include "fmt/format.h"
@@ -27,21 +23,11 @@ struct endpoint {
   bool up = false;
 };
 
-struct in_transit {
-  int from = 0;
-  protocol::net_message message;
+// A message for an end that is down: kept until its due tick, in case the node comes back
+// first (then it is handed over), else dropped.
+struct waiting {
   std::int64_t due = 0;
-  std::uint64_t accepted = 0;  // acceptance order: ties of due tick go by it
-  bool gone = false;           // handed over or dropped: erased after the pass
-};
-
-// Mail to a link: the messages one endpoint sent in one turn, or a command. One inbox for
-// both, so that a cut, a heal or a burst takes effect between exactly the messages sent
-// before and after it.
-struct link_input {
-  std::optional<link_command> command;
-  int from = 0;
-  std::vector<protocol::net_message> messages;
+  protocol::net_message message;
 };
 
 // A message handed to a node ahead of its due tick: still ours to account for, until it is
@@ -49,8 +35,8 @@ struct link_input {
 struct handed_over {
   std::int64_t due = 0;
   std::size_t to = 0;
-  const std::string* kind = nullptr;  // key of `counts` in link_state::counts
   protocol::message_counts* counts = nullptr;
+  const std::string* kind = nullptr;  // key of `counts` in link_state::counts
 };
 
 struct loss_burst {
@@ -59,36 +45,40 @@ struct loss_burst {
   double loss = 0.0;
 };
 
+// One direction of the link: messages sent by end `from` to the other end. Each has its own
+// random stream and counters, so the two ends' mail can be read in either order (they flush
+// in the same phase, and which reaches the link first is up to the threads) with the same
+// outcome.
+struct direction {
+  std::unique_ptr<protocol::link_model> model;
+  std::int64_t last_due = 0;          // for FIFO delivery
+  std::uint64_t handed_seq = 0;       // stamps what the receiver reads in canonical order
+  std::vector<waiting> for_down_end;  // sent while the receiving end was down
+};
+
 struct link_state {
   participant_info info;
   std::array<endpoint, 2> ends;
-  std::unique_ptr<protocol::link_model> model;
+  std::array<direction, 2> directions;  // by sending end
   bool reorder = false;
   std::int64_t lookahead = 1;
-  ordered_inbox<link_input> inbox;
-  // Pending deliveries, in no order: a hand-over sorts what it takes by (due, accepted), a
-  // deterministic order. One vector whose capacity stays: no allocation per message.
-  std::vector<in_transit> pending;
-  std::uint64_t accepted = 0;
-  std::deque<handed_over> handed;              // in order of due tick
-  std::array<std::int64_t, 2> last_due{0, 0};  // per direction, for FIFO delivery
+  std::vector<handed_over> handed;
   // Sent before this tick and the link was, or later got, cut: lost. Max while cut; the heal's
   // tick after. A batch can arrive after a cut or heal stamped later than it (an outbox hands
   // over once per lookahead), so a message is judged by when it was sent, not when read.
   std::int64_t cut_until = std::numeric_limits<std::int64_t>::min();
   // Loss bursts by start tick; a message sent at s takes the last one started by s.
   std::vector<loss_burst> bursts;
-  std::uint64_t delivered_seq = 0;
   protocol::accounting_by_kind counts;
   // Most traffic is of one kind at a time: skip the string-keyed lookup when it repeats.
   const std::string* last_kind = nullptr;
   protocol::message_counts* last_counts = nullptr;
 
   // Table 2's loss probability, or a burst's for a message sent at `sent_tick`.
-  double loss_at(std::int64_t sent_tick) const {
+  double loss_at(std::int64_t sent_tick, double normal) const {
     for (auto it = bursts.rbegin(); it != bursts.rend(); ++it)
-      if (it->from <= sent_tick) return sent_tick < it->until ? it->loss : model->loss();
-    return model->loss();
+      if (it->from <= sent_tick) return sent_tick < it->until ? it->loss : normal;
+    return normal;
   }
 
   protocol::message_counts& counter(const std::string& kind) {
@@ -118,33 +108,136 @@ void recount_handed(link_state& st, std::size_t to, std::int64_t from_due, bool 
   });
 }
 
-void apply(link_actor* self, std::int64_t tick, const link_command& cmd) {
+// Messages for end `to`, which is down, due at or before `tick`: the node was down when they
+// were due.
+void drop_overdue(link_state& st, std::size_t to, std::int64_t tick) {
+  std::erase_if(st.directions[1 - to].for_down_end, [&](const waiting& w) {
+    if (w.due > tick) return false;
+    ++st.counter(w.message.kind).dropped;
+    return true;
+  });
+}
+
+// Counts `message` as delivered to end `to`, due at `due`, and adds it to `out`.
+void deliver(link_state& st, std::size_t to, std::int64_t due, protocol::net_message message,
+             std::vector<net_delivery>& out) {
+  auto& c = st.counter(message.kind);
+  ++c.delivered;
+  st.handed.push_back(handed_over{due, to, &c, st.last_kind});
+  ++message.hops;
+  out.push_back(net_delivery{due, std::move(message)});
+}
+
+// Sends end `to` what `out` holds as one hand-over, stamped `stamp` (the turn of the flush it
+// answers, or of the command); an announced one goes even when empty, since the node counts.
+void hand_over(link_actor* self, std::size_t to, mail_stamp stamp, bool announced,
+               std::vector<net_delivery>& out) {
   auto& st = self->state;
+  if (out.empty() && !announced) return;
+  auto& dir = st.directions[1 - to];
+  stamp.sender = st.info.id;
+  stamp.seq = dir.handed_seq;
+  dir.handed_seq += out.size();
+  self->send(st.ends[to].handle, net_deliver_atom_v, stamp, announced, st.ends[1 - to].node,
+             std::move(out));
+}
+
+// Decides the fate of `message`, sent by end `from` at `sent_tick`: lost, or delivered after
+// a delay (into `out`, or held if the receiving end is down), and perhaps duplicated. One
+// draw set per message whatever its fate.
+void accept(link_state& st, std::size_t from, std::int64_t sent_tick, protocol::net_message message,
+            std::vector<net_delivery>& out) {
+  auto& dir = st.directions[from];
+  auto to = 1 - from;
+  auto& c = st.counter(message.kind);
+  ++c.sent;
+  auto fate = dir.model->draw(st.loss_at(sent_tick, dir.model->loss()));
+  // A message read after a cut that came later than it was on the wire when the link was cut:
+  // everything it could be due at is after the cut (due >= sent + lookahead > cut tick).
+  if (fate.lost || sent_tick < st.cut_until) {
+    ++c.lost;
+    return;
+  }
+  auto due = sent_tick + fate.delay_ticks;
+  if (!st.reorder) due = std::max(due, dir.last_due);
+  dir.last_due = due;
+  auto copies = 1;
+  auto duplicate_due = due;
+  if (fate.duplicated) {
+    ++c.duplicated;
+    copies = 2;
+    duplicate_due = std::max(due, sent_tick + fate.duplicate_delay_ticks);
+  }
+  for (int i = 0; i < copies; ++i) {
+    auto at = i == 0 ? due : duplicate_due;
+    auto m = i + 1 < copies ? message : std::move(message);
+    if (st.ends[to].up)
+      deliver(st, to, at, std::move(m), out);
+    else
+      dir.for_down_end.push_back(waiting{at, std::move(m)});
+  }
+}
+
+// What end `from` flushed in the turn `flushed`: every message's fate is decided now and what
+// survives goes to the other end at once, each stamped with its due tick (the node reads it
+// then). Nothing in it is due before the tick after the flush (it was sent at most a lookahead
+// earlier), so the hand-over is in time; the clock knows of it when it was `announced`.
+void carry(link_actor* self, int from_node, const mail_stamp& flushed, bool announced,
+           std::vector<net_send_batch>& batches) {
+  auto& st = self->state;
+  auto from = end_of(st, from_node);
+  auto to = 1 - from;
+  // Nothing handed over before this turn can be taken back by what comes later.
+  std::erase_if(st.handed, [&](const handed_over& h) { return h.due < flushed.tick; });
+  if (!st.ends[to].up) drop_overdue(st, to, flushed.tick);
+  std::vector<net_delivery> out;
+  if (st.ends[to].up) {
+    std::size_t n = 0;
+    for (const auto& b : batches) n += b.messages.size();
+    out.reserve(n);
+  }
+  for (auto& b : batches)
+    for (auto& m : b.messages) accept(st, from, b.stamp.tick, std::move(m), out);
+  if (st.ends[to].up) hand_over(self, to, flushed, announced, out);
+}
+
+void apply(link_actor* self, const mail_stamp& stamp, const link_command& cmd) {
+  auto& st = self->state;
+  auto tick = stamp.tick;
   switch (cmd.op) {
     case link_op::attach: {
-      auto& e = st.ends[end_of(st, cmd.node)];
+      auto end = end_of(st, cmd.node);
+      auto& e = st.ends[end];
       e.handle = cmd.handle;
       e.up = static_cast<bool>(cmd.handle);
+      if (!e.up) break;
+      // Back before these were due: the fresh node gets them, in the order they were sent.
+      drop_overdue(st, end, tick - 1);
+      std::vector<net_delivery> out;
+      for (auto& w : st.directions[1 - end].for_down_end)
+        deliver(st, end, w.due, std::move(w.message), out);
+      st.directions[1 - end].for_down_end.clear();
+      hand_over(self, end, stamp, /*announced=*/false, out);
       break;
     }
     case link_op::node_down: {
       // The node's actor died with what it held: hand-overs due from now on were dropped.
       auto end = end_of(st, cmd.node);
-      auto& e = st.ends[end];
-      if (e.handle) self->send(e.handle, net_retract_atom_v, st.info.id, tick);
       recount_handed(st, end, tick, /*as_lost=*/false);
-      e.handle = caf::actor{};
-      e.up = false;
+      st.ends[end].handle = caf::actor{};
+      st.ends[end].up = false;
       break;
     }
     case link_op::cut:
-      // The cut catches everything on the wire: due from now on, handed over or not.
+      // The cut catches everything on the wire: due from now on, handed over or held.
       st.cut_until = std::numeric_limits<std::int64_t>::max();
       for (const auto& e : st.ends)
         if (e.up) self->send(e.handle, net_retract_atom_v, st.info.id, tick);
       recount_handed(st, 2, tick, /*as_lost=*/true);
-      for (auto& t : st.pending) ++st.counter(t.message.kind).lost;
-      st.pending.clear();
+      for (auto& dir : st.directions) {
+        for (auto& w : dir.for_down_end) ++st.counter(w.message.kind).lost;
+        dir.for_down_end.clear();
+      }
       break;
     case link_op::heal:
       if (st.cut_until > tick) st.cut_until = tick;
@@ -152,80 +245,6 @@ void apply(link_actor* self, std::int64_t tick, const link_command& cmd) {
     case link_op::loss_burst:
       st.bursts.push_back(loss_burst{tick, cmd.until_tick, cmd.loss_probability});
       break;
-  }
-}
-
-// `sent_tick` is when the endpoint sent it: the delay counts from then, and a cut or a loss
-// burst applies by it. One draw set per message whatever its fate.
-void accept(link_state& st, std::int64_t sent_tick, int from, protocol::net_message message) {
-  in_transit t{from, std::move(message)};
-  auto& c = st.counter(t.message.kind);
-  ++c.sent;
-  auto fate = st.model->draw(st.loss_at(sent_tick));
-  // A message read after a cut that came later than it was on the wire when the link was cut:
-  // everything it could be due at is after the cut (due >= sent + lookahead > cut tick).
-  if (fate.lost || sent_tick < st.cut_until) {
-    ++c.lost;
-    return;
-  }
-  auto direction = end_of(st, t.from);
-  auto due = sent_tick + fate.delay_ticks;
-  if (!st.reorder) due = std::max(due, st.last_due[direction]);
-  st.last_due[direction] = due;
-  if (fate.duplicated) {
-    ++c.duplicated;
-    auto dup = t;
-    dup.due = std::max(due, sent_tick + fate.duplicate_delay_ticks);
-    dup.accepted = st.accepted++;
-    st.pending.push_back(std::move(dup));
-  }
-  t.due = due;
-  t.accepted = st.accepted++;
-  st.pending.push_back(std::move(t));
-}
-
-// Hands over everything due before tick + lookahead: nothing sent from now on can be due that
-// early, so the set is final. One CAF message per receiving end, whatever the number of
-// network messages and due ticks in it; the node reads each at its due tick. A message for a
-// node that is down stays until its due tick, in case the node comes back first; then it is
-// dropped.
-void hand_over(link_actor* self, tick_context& ctx) {
-  auto& st = self->state;
-  auto tick = ctx.tick();
-  auto horizon = tick + st.lookahead;
-  auto ready_end = std::partition(st.pending.begin(), st.pending.end(),
-                                  [&](const in_transit& t) { return t.due < horizon; });
-  std::sort(st.pending.begin(), ready_end, [](const in_transit& a, const in_transit& b) {
-    return std::tie(a.due, a.accepted) < std::tie(b.due, b.accepted);
-  });
-  std::array<std::vector<net_delivery>, 2> out;
-  for (auto it = st.pending.begin(); it != ready_end; ++it) {
-    auto& t = *it;
-    auto to = 1 - end_of(st, t.from);
-    auto& c = st.counter(t.message.kind);
-    if (!st.ends[to].up) {
-      if (t.due <= tick) {
-        ++c.dropped;
-        t.gone = true;
-      }
-      continue;
-    }
-    ++c.delivered;
-    if (t.due > tick) st.handed.push_back(handed_over{t.due, to, st.last_kind, &c});
-    ++t.message.hops;
-    if (out[to].empty()) out[to].reserve(static_cast<std::size_t>(ready_end - it));
-    out[to].push_back(net_delivery{t.due, std::move(t.message)});
-    t.gone = true;
-  }
-  std::erase_if(st.pending, [](const in_transit& t) { return t.gone; });
-  for (std::size_t to = 0; to < 2; ++to) {
-    if (out[to].empty()) continue;
-    const auto& end = st.ends[to];
-    auto first_due = out[to].front().due;
-    mail_stamp stamp{tick, static_cast<std::uint8_t>(phase::network), st.info.id, st.delivered_seq};
-    st.delivered_seq += out[to].size();
-    self->send(end.handle, net_deliver_atom_v, stamp, st.ends[1 - to].node, std::move(out[to]));
-    ctx.sent_mail_to(participant_ids::camera(end.node), first_due);
   }
 }
 
@@ -247,44 +266,28 @@ caf::behavior link(link_actor* self, participant_info info, config::network_sett
   st.ends[1].node = b;
   st.reorder = network.reorder;
   st.lookahead = protocol::link_model::min_delay_ticks(network, tick_seconds);
-  st.model = std::make_unique<protocol::link_model>(network, tick_seconds,
-                                                    config::derive_seed(seed, st.info.id));
+  auto link_seed = config::derive_seed(seed, st.info.id);
+  for (std::uint64_t d = 0; d < 2; ++d)
+    st.directions[d].model = std::make_unique<protocol::link_model>(
+        network, tick_seconds, config::derive_seed(link_seed, d));
   return {
-      [self](net_send_atom, int from, std::vector<net_send_batch>& batches) {
-        for (auto& b : batches)
-          self->state.inbox.put(b.stamp, link_input{std::nullopt, from, std::move(b.messages)});
+      [self](net_send_atom, int from, const mail_stamp& flushed, bool announced,
+             std::vector<net_send_batch>& batches) {
+        carry(self, from, flushed, announced, batches);
       },
-      [self](link_cmd_atom, const mail_stamp& stamp, link_command& cmd) {
-        self->state.inbox.put(stamp, link_input{std::move(cmd), 0, {}});
-      },
-      [self](tick_atom, std::int64_t tick, std::uint8_t p) {
-        auto& st = self->state;
-        tick_context ctx(st.info.id, st.info.name, tick, st.info.tick_phase);
-        for (auto& [stamp, input] : st.inbox.take_due(tick, p)) {
-          if (input.command) {
-            apply(self, tick, *input.command);
-            continue;
-          }
-          for (auto& m : input.messages) accept(st, stamp.tick, input.from, std::move(m));
-        }
-        while (!st.handed.empty() && st.handed.front().due <= tick) st.handed.pop_front();
-        hand_over(self, ctx);
-        // Nothing due before the horizon is left but for nodes that are down, so the next
-        // hand-over is a lookahead later at the soonest; a node's own send wakes us as well.
-        for (const auto& t : st.pending) ctx.wake_at(t.due);
-        forget_bursts(st, tick);
-        self->send(caf::actor_cast<caf::actor>(self->current_sender()), std::move(ctx).finish());
+      [self](link_cmd_atom, const mail_stamp& stamp, const link_command& cmd) {
+        apply(self, stamp, cmd);
+        forget_bursts(self->state, stamp.tick);
+        return done_atom_v;
       },
       [self](report_atom, std::int64_t end_tick) {
         auto& st = self->state;
         auto counts = st.counts;
-        // Sent in the last ticks, before the lookahead had us read them: on the wire still.
-        for (const auto& [stamp, input] : st.inbox.take_due(end_tick + 1, 0))
-          for (const auto& m : input.messages) {
-            ++counts[m.kind].sent;
-            ++counts[m.kind].in_flight;
-          }
-        for (const auto& t : st.pending) ++counts[t.message.kind].in_flight;
+        // Held for an end that is down: dropped if it was due within the run, else in flight.
+        for (const auto& dir : st.directions)
+          for (const auto& w : dir.for_down_end)
+            ++(w.due < end_tick ? counts[w.message.kind].dropped
+                                : counts[w.message.kind].in_flight);
         // Handed over but due after the run: the node never read them.
         for (const auto& h : st.handed) {
           if (h.due < end_tick) continue;
@@ -304,7 +307,7 @@ participant_info link_participant(std::size_t index, int a, int b) {
   info.id = participant_ids::link(index);
   info.name = fmt::format("link/{}-{}", a, b);
   info.tick_phase = phase::network;
-  info.mode = wake_mode::on_demand;
+  info.mode = wake_mode::never;
   info.reports_at_end = true;
   return info;
 }

@@ -10,7 +10,8 @@ namespace argus::actors {
 /// When the clock ticks a participant.
 enum class wake_mode : std::uint8_t {
   every_tick = 0,  ///< in its phase of every tick (cameras that sense each frame)
-  on_demand = 1,   ///< only when it asked for a tick, or someone sent it mail (idle links)
+  on_demand = 1,   ///< only when it asked for a tick, or someone sent it mail
+  never = 2,       ///< works on its mail alone (links); takes part in the end-of-run reports
 };
 
 /// What a participant tells the clock when it joins. The id is stable across runs (derived

@@ -30,7 +30,7 @@ caf::behavior scenario_script(caf::stateful_actor<script_state>* self, config::s
   st.scenario = std::move(scenario);
   st.clock = std::move(clock);
   return {
-      [self](tick_atom, std::int64_t tick, std::uint8_t) {
+      [self](tick_atom, std::int64_t tick, std::uint8_t, std::uint32_t) {
         auto& st = self->state;
         tick_context ctx(st.info.id, st.info.name, tick, st.info.tick_phase);
         for (; st.next < st.tasks.size() && st.tasks[st.next].first <= tick; ++st.next) {

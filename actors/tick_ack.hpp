@@ -11,20 +11,21 @@ namespace argus::actors {
 inline constexpr std::int64_t no_wakeup = -1;
 
 /// A participant's answer to a tick: done with tick `tick`, wants to be ticked again at
-/// `next_wakeup` (on-demand participants only), sent mail to the participants in `woken`
-/// (so the clock ticks them to read it, not before the matching tick of `woken_not_before`
-/// when that is not `no_wakeup`: mail the receiver need not read at once), and produced
-/// `events`.
+/// `next_wakeup` (on-demand participants only), sent mail to the participants in `woken` (so
+/// the clock ticks them to read it), sent mail through relays (links) that will hand each
+/// participant in `relayed` one hand-over (so the clock tells it, with its next tick, how many
+/// to wait for), and produced `events`.
 ///
 /// Contract: a participant sends all its mail *before* its ack. Local CAF sends enqueue
 /// synchronously, so once the clock holds every ack of a phase, every message of that phase
-/// sits in its receiver's mailbox ahead of the receiver's next tick.
+/// sits in its receiver's mailbox ahead of the receiver's next tick — except what goes through
+/// a relay, which is why relayed mail is announced and counted (docs/network.md).
 struct tick_ack {
   std::uint64_t participant = 0;
   std::int64_t tick = 0;
   std::int64_t next_wakeup = no_wakeup;
   std::vector<std::uint64_t> woken;
-  std::vector<std::int64_t> woken_not_before;  // parallel to woken
+  std::vector<std::uint64_t> relayed;  // one entry per announced hand-over
   std::vector<sim_event> events;
 
   friend bool operator==(const tick_ack&, const tick_ack&) = default;
@@ -32,7 +33,7 @@ struct tick_ack {
 
 template <class Inspector>
 typename Inspector::result_type inspect(Inspector& f, tick_ack& x) {
-  return f(x.participant, x.tick, x.next_wakeup, x.woken, x.woken_not_before, x.events);
+  return f(x.participant, x.tick, x.next_wakeup, x.woken, x.relayed, x.events);
 }
 
 }  // namespace argus::actors

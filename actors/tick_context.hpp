@@ -36,13 +36,14 @@ class tick_context {
     ack_.events.push_back(std::move(ev));
   }
 
-  /// Records that mail went to participant `id`, so the clock ticks it to read it: at once
-  /// (its next turn), or not before tick `not_before` when the receiver has lookahead — a
-  /// link need not read what was sent on it until the earliest tick it could be due.
-  void sent_mail_to(std::uint64_t id, std::int64_t not_before = no_wakeup) {
-    ack_.woken.push_back(id);
-    ack_.woken_not_before.push_back(not_before);
-  }
+  /// Records that mail went to participant `id`, so the clock ticks it to read it (its next
+  /// turn).
+  void sent_mail_to(std::uint64_t id) { ack_.woken.push_back(id); }
+
+  /// Records that what this participant sent in this turn will reach participant `id` as one
+  /// hand-over from a relay (a link actor, which the clock does not tick): the clock tells `id`
+  /// with its next tick to wait for it (docs/network.md, "Announced hand-overs").
+  void relayed_to(std::uint64_t id) { ack_.relayed.push_back(id); }
 
   /// Asks to be ticked again at `tick` (on-demand participants; the earliest request wins).
   void wake_at(std::int64_t tick) {

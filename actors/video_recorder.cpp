@@ -149,7 +149,7 @@ caf::behavior video_recorder(caf::stateful_actor<video_recorder_state>* self,
              std::shared_ptr<const world::snapshot>& frame) {
         self->state.snapshots.put(stamp, std::move(frame));
       },
-      [self](tick_atom, std::int64_t tick, std::uint8_t p) {
+      [self](tick_atom, std::int64_t tick, std::uint8_t p, std::uint32_t) {
         auto& st = self->state;
         st.ctx.emplace(st.info.id, st.info.name, tick, st.info.tick_phase);
         st.clock = caf::actor_cast<caf::actor>(self->current_sender());

@@ -153,7 +153,7 @@ caf::behavior world_coordinator(caf::stateful_actor<world_coordinator_state>* se
       [self](world_report_atom, const mail_stamp& stamp, partition_report& report) {
         self->state.reports.put(stamp, std::move(report));
       },
-      [self](tick_atom, std::int64_t tick, std::uint8_t p) {
+      [self](tick_atom, std::int64_t tick, std::uint8_t p, std::uint32_t) {
         auto& st = self->state;
         tick_context ctx(st.info.id, st.info.name, tick, st.info.tick_phase);
         auto due = st.reports.take_due(tick, p);

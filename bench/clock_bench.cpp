@@ -20,7 +20,7 @@ using namespace argus::actors;
 
 caf::behavior bare_participant(caf::event_based_actor* self, std::uint64_t id) {
   return {
-      [self, id](tick_atom, std::int64_t tick, std::uint8_t) {
+      [self, id](tick_atom, std::int64_t tick, std::uint8_t, std::uint32_t) {
         tick_ack ack;
         ack.participant = id;
         ack.tick = tick;

@@ -43,7 +43,7 @@ inline caf::behavior chatter(caf::stateful_actor<chatter_state>* self, participa
              std::int64_t value) {
         self->state.inbox.put(mail_stamp{tick, p, sender, seq}, value);
       },
-      [self, peers](tick_atom, std::int64_t tick, std::uint8_t p) {
+      [self, peers](tick_atom, std::int64_t tick, std::uint8_t p, std::uint32_t) {
         auto& st = self->state;
         tick_context ctx(st.info.id, st.info.name, tick, st.info.tick_phase);
         auto due = st.inbox.take_due(tick, p);

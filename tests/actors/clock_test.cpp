@@ -93,12 +93,12 @@ CAF_TEST(the next phase waits for every acknowledgement of the current one) {
   tick_ack ack_a;
   ack_a.participant = 1;
   inject((tick_ack), from(a).to(clock).with(ack_a));
-  disallow((tick_atom, std::int64_t, std::uint8_t), from(clock).to(later));
+  disallow((tick_atom, std::int64_t, std::uint8_t, std::uint32_t), from(clock).to(later));
   tick_ack ack_b;
   ack_b.participant = 2;
   inject((tick_ack), from(b).to(clock).with(ack_b));
-  expect((tick_atom, std::int64_t, std::uint8_t),
-         from(clock).to(later).with(_, std::int64_t{0}, std::uint8_t{3}));
+  expect((tick_atom, std::int64_t, std::uint8_t, std::uint32_t),
+         from(clock).to(later).with(_, std::int64_t{0}, std::uint8_t{3}, std::uint32_t{0}));
   tick_ack ack_later;
   ack_later.participant = 3;
   inject((tick_ack), from(later).to(clock).with(ack_later));

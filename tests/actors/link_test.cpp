@@ -43,47 +43,53 @@ struct endpoint_plan {
 };
 
 // Reads what the link hands over as a camera node does (actors/net_arrivals.hpp): each
-// message in the endpoint's turn of its due tick, unless the link took it back first.
+// message in the endpoint's turn of its due tick, unless the link took it back first; a turn
+// waits for the hand-overs the clock announces with it.
 caf::behavior endpoint(caf::event_based_actor* self, endpoint_plan plan, caf::actor link,
                        std::uint64_t link_id, std::shared_ptr<endpoint_log> log) {
   auto seq = std::make_shared<std::uint32_t>(0);
   auto arrivals = std::make_shared<net_arrivals>();
   // 200 ms at 15 Hz: the links' lookahead. Sends go through an outbox as a camera node's do.
   auto outbox = std::make_shared<link_outbox>(3);
+  auto turn = [=](const net_arrivals::turn& t) {
+    tick_context ctx(participant_ids::camera(plan.node), "endpoint", t.tick, phase::cameras);
+    for (const auto& [stamp, a] : arrivals->take_due(t.tick, t.phase))
+      log->got.push_back({stamp.tick, std::stoll(a.message.body), a.message.id});
+    mail_stamp now{t.tick, t.phase, participant_ids::camera(plan.node),
+                   static_cast<std::uint64_t>(t.tick)};
+    if (t.tick >= plan.from_tick && t.tick < plan.to_tick) {
+      std::vector<protocol::net_message> batch;
+      for (int i = 0; i < plan.per_tick; ++i) {
+        protocol::net_message m;
+        m.id = protocol::make_message_id(plan.node, (*seq)++);
+        m.origin = plan.node;
+        m.destination = plan.peer;
+        m.kind = "test";
+        m.body = std::to_string(t.tick);
+        batch.push_back(std::move(m));
+      }
+      outbox->add(link_id, link, participant_ids::camera(plan.peer), now, std::move(batch));
+    }
+    if (outbox->window_ends(t.tick))
+      outbox->flush(self, plan.node, now, true, [&](std::uint64_t peer) { ctx.relayed_to(peer); });
+    self->send(t.clock, std::move(ctx).finish());
+  };
   return {
       [=](flush_atom) {
-        outbox->flush(self, plan.node, [](std::uint64_t) {});
+        outbox->flush(self, plan.node, mail_stamp{}, false, [](std::uint64_t) {});
         return done_atom_v;
       },
-      [=](net_deliver_atom, const mail_stamp& stamp, int from, std::vector<net_delivery>& batch) {
-        arrivals->put(stamp, from, batch);
+      [=](net_deliver_atom, const mail_stamp& stamp, bool announced, int from,
+          std::vector<net_delivery>& batch) {
+        arrivals->put(stamp, announced, from, batch);
+        if (auto t = arrivals->take_ready()) turn(*t);
       },
       [=](net_retract_atom, std::uint64_t from_link, std::int64_t from_due) {
         arrivals->retract(from_link, from_due);
       },
-      [=](tick_atom, std::int64_t tick, std::uint8_t) {
-        tick_context ctx(participant_ids::camera(plan.node), "endpoint", tick, phase::cameras);
-        for (const auto& [stamp, a] : arrivals->take_due(tick, 3))
-          log->got.push_back({stamp.tick, std::stoll(a.message.body), a.message.id});
-        if (tick >= plan.from_tick && tick < plan.to_tick) {
-          std::vector<protocol::net_message> batch;
-          for (int i = 0; i < plan.per_tick; ++i) {
-            protocol::net_message m;
-            m.id = protocol::make_message_id(plan.node, (*seq)++);
-            m.origin = plan.node;
-            m.destination = plan.peer;
-            m.kind = "test";
-            m.body = std::to_string(tick);
-            batch.push_back(std::move(m));
-          }
-          outbox->add(link_id, link,
-                      mail_stamp{tick, 3, participant_ids::camera(plan.node),
-                                 static_cast<std::uint64_t>(tick)},
-                      std::move(batch));
-        }
-        if (outbox->window_ends(tick))
-          outbox->flush(self, plan.node, [&](std::uint64_t id) { ctx.sent_mail_to(id); });
-        self->send(caf::actor_cast<caf::actor>(self->current_sender()), std::move(ctx).finish());
+      [=](tick_atom, std::int64_t tick, std::uint8_t p, std::uint32_t relayed) {
+        arrivals->hold({tick, p, caf::actor_cast<caf::actor>(self->current_sender())}, relayed);
+        if (auto t = arrivals->take_ready()) turn(*t);
       },
   };
 }
@@ -99,20 +105,24 @@ participant_info endpoint_participant(int node, std::string name) {
 // What the fault injector does to actors besides telling the link (kill, retire, join).
 using side_effects = std::map<std::int64_t, std::function<void(caf::event_based_actor*)>>;
 
-// Sends scheduled commands to the link in the faults phase, as the fault injector does.
-caf::behavior commander(caf::event_based_actor* self, caf::actor link, std::uint64_t link_id,
+// Sends scheduled commands to the link in the faults phase, as the fault injector does: a
+// request, and the turn's ack once the link has answered.
+caf::behavior commander(caf::event_based_actor* self, caf::actor link,
                         std::map<std::int64_t, link_command> schedule, side_effects effects) {
   return {
-      [=](tick_atom, std::int64_t tick, std::uint8_t) {
+      [=](tick_atom, std::int64_t tick, std::uint8_t, std::uint32_t) {
         tick_context ctx(participant_ids::fault_injector, "commander", tick, phase::faults);
         if (auto effect = effects.find(tick); effect != effects.end()) effect->second(self);
+        auto clock = caf::actor_cast<caf::actor>(self->current_sender());
+        auto ack = std::make_shared<tick_ack>(std::move(ctx).finish());
         auto it = schedule.find(tick);
-        if (it != schedule.end()) {
-          self->send(link, link_cmd_atom_v, mail_stamp{tick, 0, participant_ids::fault_injector, 0},
-                     it->second);
-          ctx.sent_mail_to(link_id);
+        if (it == schedule.end()) {
+          self->send(clock, std::move(*ack));
+          return;
         }
-        self->send(caf::actor_cast<caf::actor>(self->current_sender()), std::move(ctx).finish());
+        self->request(link, caf::infinite, link_cmd_atom_v,
+                      mail_stamp{tick, 0, participant_ids::fault_injector, 0}, it->second)
+            .then([=](done_atom) { self->send(clock, std::move(*ack)); });
       },
   };
 }
@@ -142,7 +152,7 @@ struct fixture : recording_fixture {
     self->send(clock, join_atom_v, link, link_participant(0, 1, 2));
     self->send(clock, join_atom_v, e1, endpoint_participant(1, "e1"));
     self->send(clock, join_atom_v, e2, endpoint_participant(2, "e2"));
-    auto cmd = sys.spawn(commander, link, link_id, std::move(schedule), std::move(effects));
+    auto cmd = sys.spawn(commander, link, std::move(schedule), std::move(effects));
     self->send(clock, join_atom_v, cmd,
                participant_info{participant_ids::fault_injector, "commander", phase::faults,
                                 wake_mode::every_tick});
@@ -153,7 +163,8 @@ struct fixture : recording_fixture {
     c.op = link_op::attach;
     c.node = node;
     c.handle = std::move(handle);
-    self->send(link, link_cmd_atom_v, mail_stamp{-1, 0, 0, static_cast<std::uint64_t>(node)}, c);
+    caf::anon_send(link, link_cmd_atom_v, mail_stamp{-1, 0, 0, static_cast<std::uint64_t>(node)},
+                   c);
   }
 
   protocol::message_counts run_and_count() {

@@ -42,7 +42,7 @@ caf::behavior operator_participant(caf::event_based_actor* self, std::map<int, c
                                    std::multimap<std::int64_t, origination> plan) {
   auto seq = std::make_shared<std::uint64_t>(0);
   return {
-      [=](tick_atom, std::int64_t tick, std::uint8_t) {
+      [=](tick_atom, std::int64_t tick, std::uint8_t, std::uint32_t) {
         tick_context ctx(operator_id, "operator", tick, phase::faults);
         auto [first, last] = plan.equal_range(tick);
         for (auto it = first; it != last; ++it) {

@@ -24,7 +24,7 @@ inline caf::behavior probe(caf::event_based_actor* self, participant_info info,
                            std::shared_ptr<probe_log> log, std::vector<std::uint64_t> wakes,
                            std::int64_t period) {
   return {
-      [=](tick_atom, std::int64_t tick, std::uint8_t p) {
+      [=](tick_atom, std::int64_t tick, std::uint8_t p, std::uint32_t) {
         log->ticks.push_back(std::to_string(tick) + ":" + std::to_string(p) + ":" + info.name);
         tick_context ctx(info.id, info.name, tick, info.tick_phase);
         ctx.emit("probe");
@@ -40,7 +40,7 @@ inline caf::behavior probe(caf::event_based_actor* self, participant_info info,
 /// argument tuple, which UBSan reports.)
 inline caf::behavior silent(caf::event_based_actor*, std::string /*name*/) {
   return {
-      [](tick_atom, std::int64_t, std::uint8_t) {
+      [](tick_atom, std::int64_t, std::uint8_t, std::uint32_t) {
         // nop: the test decides whether this participant answers
       },
   };
