@@ -176,6 +176,80 @@ CAF_TEST(idle on demand participants cost nothing until woken) {
   CAF_CHECK_EQUAL(count("2:1:early"), 0u);
 }
 
+CAF_TEST(relayed hand overs are announced with the receivers next tick) {
+  auto clock = make_clock(3);
+  auto sender = sys.spawn(silent, "x");
+  auto receiver = sys.spawn(silent, "x");
+  auto relay = sys.spawn(silent, "x");
+  self->send(clock, join_atom_v, sender, info(1, "sender", phase::cameras));
+  self->send(clock, join_atom_v, receiver, info(2, "receiver", phase::cameras));
+  // A relay (a link) is never ticked: only the two cameras are.
+  self->send(clock, join_atom_v, relay, info(9, "relay", phase::network, wake_mode::never));
+  self->send(clock, start_atom_v);
+  for (int i = 0; i < 3; ++i)
+    expect((join_atom, caf::actor, participant_info), from(self).to(clock));
+  expect((start_atom), from(self).to(clock));
+  expect((tick_atom, std::int64_t, std::uint8_t, std::uint32_t),
+         from(clock).to(sender).with(_, std::int64_t{0}, std::uint8_t{3}, std::uint32_t{0}));
+  expect((tick_atom, std::int64_t, std::uint8_t, std::uint32_t),
+         from(clock).to(receiver).with(_, std::int64_t{0}, std::uint8_t{3}, std::uint32_t{0}));
+  // Tick 0: the sender flushed to two links towards the receiver, and one towards a camera
+  // that is not a participant (crashed): announced, ignored.
+  tick_ack from_sender;
+  from_sender.participant = 1;
+  from_sender.relayed = {2, 2, 77};
+  inject((tick_ack), from(sender).to(clock).with(from_sender));
+  tick_ack from_receiver;
+  from_receiver.participant = 2;
+  inject((tick_ack), from(receiver).to(clock).with(from_receiver));
+  expect((advance_atom), from(clock).to(clock));
+  expect((tick_atom, std::int64_t, std::uint8_t, std::uint32_t),
+         from(clock).to(sender).with(_, std::int64_t{1}, std::uint8_t{3}, std::uint32_t{0}));
+  expect((tick_atom, std::int64_t, std::uint8_t, std::uint32_t),
+         from(clock).to(receiver).with(_, std::int64_t{1}, std::uint8_t{3}, std::uint32_t{2}));
+  // Tick 1: nothing relayed; the count does not carry over.
+  from_sender.tick = 1;
+  from_sender.relayed.clear();
+  from_receiver.tick = 1;
+  inject((tick_ack), from(sender).to(clock).with(from_sender));
+  inject((tick_ack), from(receiver).to(clock).with(from_receiver));
+  expect((advance_atom), from(clock).to(clock));
+  expect((tick_atom, std::int64_t, std::uint8_t, std::uint32_t),
+         from(clock).to(sender).with(_, std::int64_t{2}, std::uint8_t{3}, std::uint32_t{0}));
+  expect((tick_atom, std::int64_t, std::uint8_t, std::uint32_t),
+         from(clock).to(receiver).with(_, std::int64_t{2}, std::uint8_t{3}, std::uint32_t{0}));
+  auto relay_ticked = received<tick_atom, std::int64_t, std::uint8_t, std::uint32_t>(relay);
+  CAF_CHECK(!relay_ticked);
+  // Tick 2, the last: the run ends and the clock lets everyone go.
+  from_sender.tick = 2;
+  from_receiver.tick = 2;
+  inject((tick_ack), from(sender).to(clock).with(from_sender));
+  inject((tick_ack), from(receiver).to(clock).with(from_receiver));
+  run();
+  CAF_CHECK(rec->done);
+}
+
+CAF_TEST(a relay that dies ends the run with an error that names it) {
+  auto clock = make_clock(5);
+  add_probe(clock, info(1, "crowd", phase::world));
+  // A camera waiting for the relay's hand-over: it does not answer tick 0.
+  auto waiting = sys.spawn(silent, "x");
+  self->send(clock, join_atom_v, waiting, info(2, "camera", phase::cameras));
+  auto relay = sys.spawn(silent, "x");
+  self->send(clock, join_atom_v, relay, info(9, "link/3-4", phase::network, wake_mode::never));
+  self->send(clock, start_atom_v);
+  sched.run();
+  CAF_CHECK_EQUAL(count("0:1:crowd"), 1u);
+  caf::anon_send_exit(relay, caf::exit_reason::kill);
+  run();
+  std::string error;
+  self->receive([&](run_result&) { CAF_FAIL("the run went on without its relay"); },
+                [&](caf::error& err) { error = to_string(err); },
+                caf::after(std::chrono::seconds(0)) >> [] { CAF_FAIL("the run stalled"); });
+  CAF_CHECK_NOT_EQUAL(error.find("link/3-4"), std::string::npos);
+  CAF_CHECK_EQUAL(count("1:1:crowd"), 0u);
+}
+
 CAF_TEST(at speed 1 virtual time stays within one tick of wall time) {
   auto clock = make_clock(60, 1.0);
   add_probe(clock, info(1, "crowd", phase::world));

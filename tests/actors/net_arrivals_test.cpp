@@ -1,0 +1,85 @@
+// A node's side of its links: hand-overs held until due, retracted by a cut, and a turn held
+// until every hand-over the clock announced for it has come (docs/network.md).
+
+#include "actors/net_arrivals.hpp"
+
+#include <gtest/gtest.h>
+
+namespace argus::actors {
+namespace {
+
+constexpr auto cameras = static_cast<std::uint8_t>(phase::cameras);
+
+std::vector<net_delivery> messages(std::initializer_list<std::int64_t> dues) {
+  std::vector<net_delivery> out;
+  for (auto due : dues) {
+    net_delivery d;
+    d.due = due;
+    d.message.id = static_cast<std::uint64_t>(due);
+    out.push_back(d);
+  }
+  return out;
+}
+
+// A hand-over from link `link` answering its peer's flush in the turn (`tick`, cameras).
+mail_stamp flushed(std::int64_t tick, std::uint64_t link) {
+  return mail_stamp{tick, cameras, link, 0};
+}
+
+TEST(net_arrivals, a_turn_waits_for_every_announced_hand_over) {
+  net_arrivals arrivals;
+  arrivals.hold({12, cameras, caf::actor{}}, 2);
+  EXPECT_FALSE(arrivals.take_ready());
+  auto batch = messages({13, 14});
+  arrivals.put(flushed(11, 100), true, 1, batch);
+  EXPECT_FALSE(arrivals.take_ready());  // one of two
+  auto empty = messages({});
+  arrivals.put(flushed(11, 101), true, 2, empty);  // all lost on the way: still counts
+  auto turn = arrivals.take_ready();
+  ASSERT_TRUE(turn);
+  EXPECT_EQ(turn->tick, 12);
+  EXPECT_FALSE(arrivals.take_ready());  // taken once
+}
+
+TEST(net_arrivals, hand_overs_flushed_in_this_turn_or_unannounced_count_for_no_turn) {
+  net_arrivals arrivals;
+  // A peer in the same phase flushed at tick 12 before this node's turn at 12 ran: that
+  // hand-over belongs to the next turn.
+  auto same_turn = messages({13});
+  arrivals.put(flushed(12, 100), true, 1, same_turn);
+  // A crashed peer's last words, or what a recovered node is handed: nobody announced them.
+  auto unannounced = messages({13});
+  arrivals.put(flushed(11, 101), false, 2, unannounced);
+  arrivals.hold({12, cameras, caf::actor{}}, 1);
+  EXPECT_FALSE(arrivals.take_ready());
+  auto late = messages({14});
+  arrivals.put(flushed(11, 102), true, 3, late);
+  ASSERT_TRUE(arrivals.take_ready());
+  // The turn at 13 owes one announced hand-over: the one flushed at 12, already here.
+  arrivals.hold({13, cameras, caf::actor{}}, 1);
+  EXPECT_TRUE(arrivals.take_ready());
+}
+
+TEST(net_arrivals, messages_are_read_at_their_due_tick_in_canonical_order_unless_retracted) {
+  net_arrivals arrivals;
+  auto from_b = messages({5, 6, 9});
+  arrivals.put(mail_stamp{2, cameras, 200, 40}, true, 2, from_b);
+  auto from_a = messages({5, 9});
+  arrivals.put(mail_stamp{2, cameras, 100, 7}, true, 1, from_a);
+  auto due5 = arrivals.take_due(5, cameras);
+  ASSERT_EQ(due5.size(), 2u);
+  EXPECT_EQ(due5[0].first.sender, 100u);  // by link, whatever the order they came in
+  EXPECT_EQ(due5[0].first.seq, 7u);
+  EXPECT_EQ(due5[1].first.sender, 200u);
+  EXPECT_EQ(due5[1].first.seq, 40u);
+  arrivals.retract(200, 7);  // link 200 was cut at 7: its message due at 9 never arrives
+  auto rest = arrivals.take_due(10, cameras);
+  ASSERT_EQ(rest.size(), 2u);
+  EXPECT_EQ(rest[0].second.from, 2);  // due 6, before the cut
+  EXPECT_EQ(rest[0].first.tick, 6);
+  EXPECT_EQ(rest[1].second.from, 1);
+  EXPECT_EQ(rest[1].first.tick, 9);
+}
+
+}  // namespace
+}  // namespace argus::actors
