@@ -3,6 +3,8 @@
 #include <cstdint>
 #include <random>
 
+#include "pcg_random.hpp"
+
 #include "config/scenario.hpp"
 
 namespace argus::protocol {
@@ -46,7 +48,10 @@ class link_model {
   double min_delay_s_;
   double max_delay_s_;
   double tick_s_;
-  std::mt19937_64 rng_;
+  // PCG (Debian's libpcg-cpp-dev): 32 bytes of state where mt19937_64 has 2.5 KB. Every link
+  // direction owns one, so with tens of thousands of links the generators' state alone
+  // outgrew the caches (bench/RESULTS.md, "Link layer").
+  pcg64 rng_;
 };
 
 }  // namespace argus::protocol

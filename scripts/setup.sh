@@ -7,7 +7,7 @@ ARGUS_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 
 argus_packages=(
   build-essential cmake ninja-build ccache pkg-config git
-  libcaf-dev libeigen3-dev libopencv-dev libmimalloc-dev
+  libcaf-dev libeigen3-dev libopencv-dev libmimalloc-dev libpcg-cpp-dev
   libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri
   libyaml-cpp-dev libcli11-dev libspdlog-dev libfmt-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev clang-format
