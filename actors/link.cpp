@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <limits>
-#include <memory>
+#include <optional>
 #include <vector>
 
 #include "actors/net_delivery.hpp"
@@ -31,12 +31,18 @@ struct waiting {
 };
 
 // A message handed to a node ahead of its due tick: still ours to account for, until it is
-// due, should a cut take it back or the node go down first.
+// due, should a cut take it back or the node go down first. Small: a busy link holds a few
+// lookaheads' worth.
 struct handed_over {
   std::int64_t due = 0;
-  std::size_t to = 0;
-  protocol::message_counts* counts = nullptr;
-  const std::string* kind = nullptr;  // key of `counts` in link_state::counts
+  std::uint16_t kind = 0;  // index into link_state::kinds
+  std::uint8_t to = 0;
+};
+
+// The accounting of one message kind on this link.
+struct kind_counts {
+  std::string kind;
+  protocol::message_counts counts;
 };
 
 struct loss_burst {
@@ -50,18 +56,21 @@ struct loss_burst {
 // in the same phase, and which reaches the link first is up to the threads) with the same
 // outcome.
 struct direction {
-  std::unique_ptr<protocol::link_model> model;
+  std::optional<protocol::link_model> model;
   std::int64_t last_due = 0;          // for FIFO delivery
   std::uint64_t handed_seq = 0;       // stamps what the receiver reads in canonical order
   std::vector<waiting> for_down_end;  // sent while the receiving end was down
 };
 
+// Hot fields first: a busy link is read once per window per direction, and at ten thousand
+// nodes every read starts with cache misses, one per line touched.
 struct link_state {
-  participant_info info;
   std::array<endpoint, 2> ends;
   std::array<direction, 2> directions;  // by sending end
   bool reorder = false;
   std::int64_t lookahead = 1;
+  // In no order; entries due before the current tick are dead weight, pruned only now and
+  // then (pruning reads every entry: more cache lines than the append it would save).
   std::vector<handed_over> handed;
   // Sent before this tick and the link was, or later got, cut: lost. Max while cut; the heal's
   // tick after. A batch can arrive after a cut or heal stamped later than it (an outbox hands
@@ -69,10 +78,11 @@ struct link_state {
   std::int64_t cut_until = std::numeric_limits<std::int64_t>::min();
   // Loss bursts by start tick; a message sent at s takes the last one started by s.
   std::vector<loss_burst> bursts;
-  protocol::accounting_by_kind counts;
-  // Most traffic is of one kind at a time: skip the string-keyed lookup when it repeats.
-  const std::string* last_kind = nullptr;
-  protocol::message_counts* last_counts = nullptr;
+  // A link carries a handful of kinds: a short vector in order of first use, and the last one
+  // looked up first (most traffic is of one kind at a time).
+  std::vector<kind_counts> kinds;
+  std::uint16_t last_kind = 0;
+  participant_info info;
 
   // Table 2's loss probability, or a burst's for a message sent at `sent_tick`.
   double loss_at(std::int64_t sent_tick, double normal) const {
@@ -81,13 +91,24 @@ struct link_state {
     return normal;
   }
 
+  // Index of `kind` in `kinds`, added on first use.
+  std::uint16_t kind_index(const std::string& kind) {
+    if (last_kind < kinds.size() && kinds[last_kind].kind == kind) return last_kind;
+    auto it = std::find_if(kinds.begin(), kinds.end(),
+                           [&](const kind_counts& k) { return k.kind == kind; });
+    if (it == kinds.end()) it = kinds.insert(kinds.end(), kind_counts{kind, {}});
+    last_kind = static_cast<std::uint16_t>(it - kinds.begin());
+    return last_kind;
+  }
+
   protocol::message_counts& counter(const std::string& kind) {
-    if (last_kind == nullptr || *last_kind != kind) {
-      auto it = counts.try_emplace(kind).first;
-      last_kind = &it->first;
-      last_counts = &it->second;
-    }
-    return *last_counts;
+    return kinds[kind_index(kind)].counts;
+  }
+
+  protocol::accounting_by_kind accounting() const {
+    protocol::accounting_by_kind out;
+    for (const auto& k : kinds) out[k.kind] += k.counts;
+    return out;
   }
 };
 
@@ -102,8 +123,9 @@ std::size_t end_of(const link_state& st, int node) {
 void recount_handed(link_state& st, std::size_t to, std::int64_t from_due, bool as_lost) {
   std::erase_if(st.handed, [&](const handed_over& h) {
     if (h.due < from_due || (to != 2 && h.to != to)) return false;
-    --h.counts->delivered;
-    ++(as_lost ? h.counts->lost : h.counts->dropped);
+    auto& c = st.kinds[h.kind].counts;
+    --c.delivered;
+    ++(as_lost ? c.lost : c.dropped);
     return true;
   });
 }
@@ -118,12 +140,12 @@ void drop_overdue(link_state& st, std::size_t to, std::int64_t tick) {
   });
 }
 
-// Counts `message` as delivered to end `to`, due at `due`, and adds it to `out`.
-void deliver(link_state& st, std::size_t to, std::int64_t due, protocol::net_message message,
-             std::vector<net_delivery>& out) {
-  auto& c = st.counter(message.kind);
-  ++c.delivered;
-  st.handed.push_back(handed_over{due, to, &c, st.last_kind});
+// Counts `message` (of kind index `kind`) as delivered to end `to`, due at `due`, and adds it
+// to `out`.
+void deliver(link_state& st, std::size_t to, std::int64_t due, std::uint16_t kind,
+             protocol::net_message message, std::vector<net_delivery>& out) {
+  ++st.kinds[kind].counts.delivered;
+  st.handed.push_back(handed_over{due, kind, static_cast<std::uint8_t>(to)});
   ++message.hops;
   out.push_back(net_delivery{due, std::move(message)});
 }
@@ -149,7 +171,8 @@ void accept(link_state& st, std::size_t from, std::int64_t sent_tick, protocol::
             std::vector<net_delivery>& out) {
   auto& dir = st.directions[from];
   auto to = 1 - from;
-  auto& c = st.counter(message.kind);
+  auto kind = st.kind_index(message.kind);
+  auto& c = st.kinds[kind].counts;
   ++c.sent;
   auto fate = dir.model->draw(st.loss_at(sent_tick, dir.model->loss()));
   // A message read after a cut that came later than it was on the wire when the link was cut:
@@ -172,7 +195,7 @@ void accept(link_state& st, std::size_t from, std::int64_t sent_tick, protocol::
     auto at = i == 0 ? due : duplicate_due;
     auto m = i + 1 < copies ? message : std::move(message);
     if (st.ends[to].up)
-      deliver(st, to, at, std::move(m), out);
+      deliver(st, to, at, kind, std::move(m), out);
     else
       dir.for_down_end.push_back(waiting{at, std::move(m)});
   }
@@ -187,8 +210,9 @@ void carry(link_actor* self, int from_node, const mail_stamp& flushed, bool anno
   auto& st = self->state;
   auto from = end_of(st, from_node);
   auto to = 1 - from;
-  // Nothing handed over before this turn can be taken back by what comes later.
-  std::erase_if(st.handed, [&](const handed_over& h) { return h.due < flushed.tick; });
+  // Nothing due before this turn can be taken back by what comes later.
+  if (st.handed.size() >= 64)
+    std::erase_if(st.handed, [&](const handed_over& h) { return h.due < flushed.tick; });
   if (!st.ends[to].up) drop_overdue(st, to, flushed.tick);
   std::vector<net_delivery> out;
   if (st.ends[to].up) {
@@ -214,8 +238,10 @@ void apply(link_actor* self, const mail_stamp& stamp, const link_command& cmd) {
       // Back before these were due: the fresh node gets them, in the order they were sent.
       drop_overdue(st, end, tick - 1);
       std::vector<net_delivery> out;
-      for (auto& w : st.directions[1 - end].for_down_end)
-        deliver(st, end, w.due, std::move(w.message), out);
+      for (auto& w : st.directions[1 - end].for_down_end) {
+        auto kind = st.kind_index(w.message.kind);
+        deliver(st, end, w.due, kind, std::move(w.message), out);
+      }
       st.directions[1 - end].for_down_end.clear();
       hand_over(self, end, stamp, /*announced=*/false, out);
       break;
@@ -268,8 +294,7 @@ caf::behavior link(link_actor* self, participant_info info, config::network_sett
   st.lookahead = protocol::link_model::min_delay_ticks(network, tick_seconds);
   auto link_seed = config::derive_seed(seed, st.info.id);
   for (std::uint64_t d = 0; d < 2; ++d)
-    st.directions[d].model = std::make_unique<protocol::link_model>(
-        network, tick_seconds, config::derive_seed(link_seed, d));
+    st.directions[d].model.emplace(network, tick_seconds, config::derive_seed(link_seed, d));
   return {
       [self](net_send_atom, int from, const mail_stamp& flushed, bool announced,
              std::vector<net_send_batch>& batches) {
@@ -282,7 +307,7 @@ caf::behavior link(link_actor* self, participant_info info, config::network_sett
       },
       [self](report_atom, std::int64_t end_tick) {
         auto& st = self->state;
-        auto counts = st.counts;
+        auto counts = st.accounting();
         // Held for an end that is down: dropped if it was due within the run, else in flight.
         for (const auto& dir : st.directions)
           for (const auto& w : dir.for_down_end)
@@ -291,7 +316,7 @@ caf::behavior link(link_actor* self, participant_info info, config::network_sett
         // Handed over but due after the run: the node never read them.
         for (const auto& h : st.handed) {
           if (h.due < end_tick) continue;
-          auto& c = counts[*h.kind];
+          auto& c = counts[st.kinds[h.kind].kind];
           --c.delivered;
           ++c.in_flight;
         }

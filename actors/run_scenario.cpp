@@ -92,7 +92,8 @@ run_outcome run_scenario(const config::scenario& scenario, const run_options& op
   cs.tick_seconds = tick_seconds;
   cs.speed = scenario.run.speed;
   const protocol::topology topo(scenario);
-  cs.own_thread = clock_on_own_thread(threads, scenario.cameras.size() + topo.links().size());
+  // Links are never ticked: the clock's round trips are the cameras'.
+  cs.own_thread = clock_on_own_thread(threads, scenario.cameras.size());
   auto clock = spawn_clock(system, cs, recorder, progress);
 
   // Joins and link attachments go out from this thread, in this order, before `start`:
