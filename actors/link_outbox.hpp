@@ -31,6 +31,8 @@ class link_outbox {
     auto it = std::find_if(queues_.begin(), queues_.end(),
                            [&](const queue& q) { return q.link_id == link_id; });
     if (it == queues_.end()) it = queues_.insert(queues_.end(), queue{link_id, link, peer_id, {}});
+    // A flush hands the storage to the link: one allocation per window, not one per doubling.
+    if (it->batches.empty()) it->batches.reserve(static_cast<std::size_t>(lookahead_));
     it->batches.push_back(net_send_batch{stamp, std::move(messages)});
   }
 

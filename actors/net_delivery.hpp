@@ -7,7 +7,7 @@
 namespace argus::actors {
 
 /// One network message a link hands to a node ahead of time: the node reads it in its turn of
-/// tick `due`, not before (docs/network.md, "Lookahead").
+/// tick `due`, not before (docs/network.md, "Hand-over on arrival").
 struct net_delivery {
   std::int64_t due = 0;
   protocol::net_message message;

@@ -41,25 +41,18 @@ class ordered_inbox {
     auto before = [&](const auto& m) {
       return std::tie(m.first.tick, m.first.phase) < std::tie(tick, phase);
     };
+    std::vector<std::pair<mail_stamp, Payload>> due;
     if (std::all_of(mail_.begin(), mail_.end(), before)) {
       // The common case: everything held is due. Hand over the storage itself.
-      std::vector<std::pair<mail_stamp, Payload>> due;
       due.swap(mail_);
-      std::sort(due.begin(), due.end(),
-                [](const auto& a, const auto& b) { return a.first < b.first; });
-      return due;
+    } else {
+      auto due_end = std::partition(mail_.begin(), mail_.end(), before);
+      due.assign(std::make_move_iterator(mail_.begin()), std::make_move_iterator(due_end));
+      mail_.erase(mail_.begin(), due_end);
     }
-    auto due_end = std::partition(mail_.begin(), mail_.end(), [&](const auto& m) {
-      return std::tie(m.first.tick, m.first.phase) < std::tie(tick, phase);
-    });
-    std::vector<std::pair<mail_stamp, Payload>> due(std::make_move_iterator(mail_.begin()),
-                                                    std::make_move_iterator(due_end));
-    mail_.erase(mail_.begin(), due_end);
-    std::sort(due.begin(), due.end(),
-              [](const auto& a, const auto& b) { return a.first < b.first; });
+    sort_by_stamp(due);
     return due;
   }
-
   /// Drops every held message whose stamp satisfies `pred`.
   template <class Predicate>
   void discard_if(Predicate pred) {
@@ -72,6 +65,22 @@ class ordered_inbox {
   std::size_t size() const noexcept { return mail_.size(); }
 
  private:
+  // Sorts by stamp, moving each payload once: payloads can be large (a network message with
+  // its strings), stamps are small, and a sort of the pairs themselves moved each payload
+  // many times.
+  static void sort_by_stamp(std::vector<std::pair<mail_stamp, Payload>>& mail) {
+    auto by_stamp = [](const auto& a, const auto& b) { return a.first < b.first; };
+    if (std::is_sorted(mail.begin(), mail.end(), by_stamp)) return;
+    std::vector<std::pair<mail_stamp, std::size_t>> order;
+    order.reserve(mail.size());
+    for (std::size_t i = 0; i < mail.size(); ++i) order.emplace_back(mail[i].first, i);
+    std::sort(order.begin(), order.end());
+    std::vector<std::pair<mail_stamp, Payload>> sorted;
+    sorted.reserve(mail.size());
+    for (const auto& [stamp, i] : order) sorted.push_back(std::move(mail[i]));
+    mail.swap(sorted);
+  }
+
   std::vector<std::pair<mail_stamp, Payload>> mail_;
 };
 

@@ -10,7 +10,7 @@ namespace argus::actors {
 enum class phase : std::uint8_t {
   faults = 0,   ///< scheduled faults and operator tasks take effect
   world = 1,    ///< crowd partitions step pedestrians and publish a snapshot
-  network = 2,  ///< links deliver the messages due this tick
+  network = 2,  ///< the world coordinator hands out the snapshot (links are never ticked)
   cameras = 3,  ///< camera nodes sense, run their controller, send into links
 };
 

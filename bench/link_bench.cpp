@@ -2,7 +2,8 @@
 // with mean degree about 8; every node sends K messages per tick on each of its links (K = 1:
 // the worst case for batching; K = 2, 4, 8: bursts such as a query to every neighbour plus
 // forwarding) through an outbox, as camera nodes do; links draw Table 2 delay and loss and
-// deliver. 1 and 2 scheduler threads; with 2, the clock on a worker and on its own thread.
+// deliver; every node reads what arrives, as a camera node does. 1 and 2 scheduler threads;
+// with 2, the clock on a worker and on its own thread.
 //
 //   build/bench/link_bench --benchmark_counters_tabular=true
 
