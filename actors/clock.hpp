@@ -29,8 +29,8 @@ struct clock_settings {
 /// clock ticks (not `wake_mode::never` ones) should give the clock a thread of its own. On a
 /// worker, the clock goes idle between acks and is resumed by whichever worker sent the next
 /// one, so with thousands of participants its state crosses cores thousands of times per tick
-/// (bench/RESULTS.md, link layer: 10,000 cameras on 2 threads, 0.45 -> 0.76 M messages/s on
-/// its own thread; 1,000 cameras, 1.48 -> 1.24 M the other way). With few participants the
+/// (bench/RESULTS.md, link layer: 10,000 cameras on 2 threads, 0.41 -> 0.79 M messages/s on
+/// its own thread; at 1,000 cameras the two are within the noise). With few participants the
 /// opposite holds: every phase is a short round trip, and waking a thread of its own costs
 /// more than the migration. Never with one worker (one more thread would share its core) and
 /// never under CAF's test coordinator, which runs only scheduled actors.
