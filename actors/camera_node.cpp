@@ -27,7 +27,7 @@ struct camera_node_state {
   participant_info info;
   int camera_id = 0;
   bool ptz = true;
-  bool announced = false;
+  bool up_logged = false;  // `node_up` emitted
   link_directory links;
   std::unique_ptr<protocol::node_network> network;
   net_arrivals arrivals;
@@ -83,8 +83,8 @@ void take_turn(node_actor* self, std::int64_t tick, std::uint8_t p, const caf::a
   auto& st = self->state;
   st.last_turn = mail_stamp{tick, p, st.info.id, 0};
   tick_context ctx(st.info.id, st.info.name, tick, st.info.tick_phase);
-  if (!st.announced) {
-    st.announced = true;
+  if (!st.up_logged) {
+    st.up_logged = true;
     ctx.emit("node_up",
              fmt::format(R"("camera":{},"type":"{}")", st.camera_id, st.ptz ? "ptz" : "static"));
   }
