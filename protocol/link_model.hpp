@@ -3,9 +3,8 @@
 #include <cstdint>
 #include <random>
 
-#include "pcg_random.hpp"
-
 #include "config/scenario.hpp"
+#include "pcg_random.hpp"
 
 namespace argus::protocol {
 
