@@ -215,9 +215,11 @@ class clock_actor : public caf::event_based_actor {
     auto id = it->second;
     by_address_.erase(it);
     if (retired_.erase(id) != 0) return;  // already dropped when it was retired
-    if (participants_.count(id) == 0) return;
-    auto name = participants_[id].info.name;
-    if (participants_[id].info.mode == wake_mode::never) {
+    auto entry_it = participants_.find(id);
+    if (entry_it == participants_.end()) return;
+    const auto& info = entry_it->second.info;
+    auto name = info.name;
+    if (info.mode == wake_mode::never) {
       // A relay that died owes hand-overs that will never come: the receivers would wait for
       // them forever, so the run ends here, saying why, rather than stall.
       auto why = fmt::format(

@@ -184,21 +184,20 @@ void accept(link_state& st, std::size_t from, std::int64_t sent_tick, protocol::
   auto due = sent_tick + fate.delay_ticks;
   if (!st.reorder) due = std::max(due, dir.last_due);
   dir.last_due = due;
-  auto copies = 1;
-  auto duplicate_due = due;
-  if (fate.duplicated) {
-    ++c.duplicated;
-    copies = 2;
-    duplicate_due = std::max(due, sent_tick + fate.duplicate_delay_ticks);
-  }
-  for (int i = 0; i < copies; ++i) {
-    auto at = i == 0 ? due : duplicate_due;
-    auto m = i + 1 < copies ? message : std::move(message);
+  // Delivered to the node, or held for it while it is down.
+  auto place = [&](std::int64_t at, protocol::net_message m) {
     if (st.ends[to].up)
       deliver(st, to, at, kind, std::move(m), out);
     else
       dir.for_down_end.push_back(waiting{at, std::move(m)});
+  };
+  if (!fate.duplicated) {
+    place(due, std::move(message));
+    return;
   }
+  ++c.duplicated;
+  place(due, message);
+  place(std::max(due, sent_tick + fate.duplicate_delay_ticks), std::move(message));
 }
 
 // What end `from` flushed in the turn `flushed`: every message's fate is decided now and what

@@ -12,14 +12,14 @@ link_model::link_model(const config::network_settings& network, double tick_seco
       min_delay_s_(network.min_delay.count()),
       max_delay_s_(network.max_delay.count()),
       tick_s_(tick_seconds),
-      // 1e-9 absorbs binary fractions such as 0.2 / (1/15) = 3.0000000000000004.
-      lowest_ticks_(static_cast<std::int64_t>(std::ceil(min_delay_s_ / tick_s_ - 1e-9))),
+      lowest_ticks_(min_delay_ticks(network, tick_seconds)),
       highest_ticks_(std::max(
           lowest_ticks_, static_cast<std::int64_t>(std::floor(max_delay_s_ / tick_s_ + 1e-9)))),
       rng_(seed) {}
 
 std::int64_t link_model::min_delay_ticks(const config::network_settings& network,
                                          double tick_seconds) {
+  // 1e-9 absorbs binary fractions such as 0.2 / (1/15) = 3.0000000000000004.
   auto lowest =
       static_cast<std::int64_t>(std::ceil(network.min_delay.count() / tick_seconds - 1e-9));
   return std::max<std::int64_t>(1, lowest);
@@ -32,7 +32,7 @@ std::int64_t link_model::draw_delay_ticks() {
   // Delivered on the nearest tick boundary (unbiased on average), kept within the bounds:
   // never earlier than min_delay, never later than max_delay.
   auto ticks = static_cast<std::int64_t>(std::llround(delay / tick_s_));
-  return std::max<std::int64_t>(1, std::clamp(ticks, lowest_ticks_, highest_ticks_));
+  return std::clamp(ticks, lowest_ticks_, highest_ticks_);  // lowest_ticks_ >= 1
 }
 
 link_fate link_model::draw(double loss_probability) {

@@ -47,7 +47,8 @@ class link_model {
   double min_delay_s_;
   double max_delay_s_;
   double tick_s_;
-  // The delay bounds in whole ticks (a draw is rounded to the nearest tick within them).
+  // The delay bounds in whole ticks, at least 1 (a draw is rounded to the nearest tick within
+  // them).
   std::int64_t lowest_ticks_;
   std::int64_t highest_ticks_;
   // PCG (Debian's libpcg-cpp-dev): 32 bytes of state where mt19937_64 has 2.5 KB. Every link
