@@ -88,8 +88,9 @@ void take_turn(node_actor* self, std::int64_t tick, std::uint8_t p, const caf::a
     ctx.emit("node_up",
              fmt::format(R"("camera":{},"type":"{}")", st.camera_id, st.ptz ? "ptz" : "static"));
   }
-  for (auto& [stamp, a] : st.arrivals.take_due(tick, p))
-    st.network->receive(tick, a.from, a.message);
+  st.arrivals.for_each_due(tick, p, [&](const mail_stamp&, int from, protocol::net_message& m) {
+    st.network->receive(tick, from, m);
+  });
   for (const auto& m : st.network->take_delivered()) {
     // A liveness probe any node may send; the controller's messages come with it.
     if (m.kind == "ping") st.network->reply(m, "pong", {});
@@ -135,8 +136,8 @@ caf::behavior camera_node(node_actor* self, const config::scenario& scenario,
         return done_atom_v;
       },
       [self](net_deliver_atom, const mail_stamp& stamp, bool announced, int from,
-             std::vector<net_delivery>& batch) {
-        self->state.arrivals.put(stamp, announced, from, batch);
+             net_handover& handover) {
+        self->state.arrivals.put(stamp, announced, from, handover);
         take_turn_when_ready(self);
       },
       [self](net_retract_atom, std::uint64_t link, std::int64_t from_due) {

@@ -31,7 +31,7 @@ participant_info camera_participant(const config::camera_settings& camera);
 /// (`protocol::node_network`): hello beacons, neighbour discovery (`neighbour_up`,
 /// `neighbour_lost` events), multi-hop forwarding, answers to `ping`, request time-outs
 /// (`peer_failed`). Mail: `(net_deliver_atom, mail_stamp, bool announced, int from_node,
-/// std::vector<net_delivery>)` and `(net_retract_atom, ...)` from its links (docs/network.md);
+/// net_handover)` and `(net_retract_atom, ...)` from its links (docs/network.md);
 /// a tick waits for the hand-overs the clock announces with it;
 /// `(net_originate_atom, mail_stamp, int destination, std::string kind, std::string body, bool
 /// expects_reply)` asks it to send a message (`protocol::broadcast` for all within the hop

@@ -6,9 +6,10 @@
 #include <optional>
 #include <vector>
 
-#include "actors/net_delivery.hpp"
-#include "actors/net_send_batch.hpp"
+#include "actors/net_handover.hpp"
+#include "actors/net_send_window.hpp"
 #include "actors/participant_ids.hpp"
+#include "actors/send_unattributed.hpp"
 #include "actors/type_ids.hpp"
 #include "config/derive_seed.hpp"
 #include "fmt/format.h"
@@ -143,32 +144,32 @@ void drop_overdue(link_state& st, std::size_t to, std::int64_t tick) {
 // Counts `message` (of kind index `kind`) as delivered to end `to`, due at `due`, and adds it
 // to `out`.
 void deliver(link_state& st, std::size_t to, std::int64_t due, std::uint16_t kind,
-             protocol::net_message message, std::vector<net_delivery>& out) {
+             protocol::net_message&& message, net_handover& out) {
   ++st.kinds[kind].counts.delivered;
   st.handed.push_back(handed_over{due, kind, static_cast<std::uint8_t>(to)});
   ++message.hops;
-  out.push_back(net_delivery{due, std::move(message)});
+  out.add(due, std::move(message));
 }
 
 // Sends end `to` what `out` holds as one hand-over, stamped `stamp` (the turn of the flush it
 // answers, or of the command); an announced one goes even when empty, since the node counts.
 void hand_over(link_actor* self, std::size_t to, mail_stamp stamp, bool announced,
-               std::vector<net_delivery>& out) {
+               net_handover& out) {
   auto& st = self->state;
   if (out.empty() && !announced) return;
   auto& dir = st.directions[1 - to];
   stamp.sender = st.info.id;
   stamp.seq = dir.handed_seq;
   dir.handed_seq += out.size();
-  self->send(st.ends[to].handle, net_deliver_atom_v, stamp, announced, st.ends[1 - to].node,
-             std::move(out));
+  send_unattributed(self, st.ends[to].handle, net_deliver_atom_v, stamp, announced,
+                    st.ends[1 - to].node, std::move(out));
 }
 
 // Decides the fate of `message`, sent by end `from` at `sent_tick`: lost, or delivered after
 // a delay (into `out`, or held if the receiving end is down), and perhaps duplicated. One
 // draw set per message whatever its fate.
-void accept(link_state& st, std::size_t from, std::int64_t sent_tick, protocol::net_message message,
-            std::vector<net_delivery>& out) {
+void accept(link_state& st, std::size_t from, std::int64_t sent_tick,
+            protocol::net_message&& message, net_handover& out) {
   auto& dir = st.directions[from];
   auto to = 1 - from;
   auto kind = st.kind_index(message.kind);
@@ -185,7 +186,7 @@ void accept(link_state& st, std::size_t from, std::int64_t sent_tick, protocol::
   if (!st.reorder) due = std::max(due, dir.last_due);
   dir.last_due = due;
   // Delivered to the node, or held for it while it is down.
-  auto place = [&](std::int64_t at, protocol::net_message m) {
+  auto place = [&](std::int64_t at, protocol::net_message&& m) {
     if (st.ends[to].up)
       deliver(st, to, at, kind, std::move(m), out);
     else
@@ -196,7 +197,7 @@ void accept(link_state& st, std::size_t from, std::int64_t sent_tick, protocol::
     return;
   }
   ++c.duplicated;
-  place(due, message);
+  place(due, protocol::net_message(message));
   place(std::max(due, sent_tick + fate.duplicate_delay_ticks), std::move(message));
 }
 
@@ -205,7 +206,7 @@ void accept(link_state& st, std::size_t from, std::int64_t sent_tick, protocol::
 // then). Nothing in it is due before the tick after the flush (it was sent at most a lookahead
 // earlier), so the hand-over is in time; the clock knows of it when it was `announced`.
 void carry(link_actor* self, int from_node, const mail_stamp& flushed, bool announced,
-           std::vector<net_send_batch>& batches) {
+           net_send_window& window) {
   auto& st = self->state;
   auto from = end_of(st, from_node);
   auto to = 1 - from;
@@ -213,14 +214,11 @@ void carry(link_actor* self, int from_node, const mail_stamp& flushed, bool anno
   if (st.handed.size() >= 64)
     std::erase_if(st.handed, [&](const handed_over& h) { return h.due < flushed.tick; });
   if (!st.ends[to].up) drop_overdue(st, to, flushed.tick);
-  std::vector<net_delivery> out;
-  if (st.ends[to].up) {
-    std::size_t n = 0;
-    for (const auto& b : batches) n += b.messages.size();
-    out.reserve(n);
-  }
-  for (auto& b : batches)
-    for (auto& m : b.messages) accept(st, from, b.stamp.tick, std::move(m), out);
+  net_handover out;
+  if (st.ends[to].up) out.reserve(window.messages.size());
+  std::uint32_t i = 0;
+  for (const auto& turn : window.turns)
+    for (; i < turn.end; ++i) accept(st, from, turn.stamp.tick, std::move(window.messages[i]), out);
   if (st.ends[to].up) hand_over(self, to, flushed, announced, out);
 }
 
@@ -236,7 +234,7 @@ void apply(link_actor* self, const mail_stamp& stamp, const link_command& cmd) {
       if (!e.up) break;
       // Back before these were due: the fresh node gets them, in the order they were sent.
       drop_overdue(st, end, tick - 1);
-      std::vector<net_delivery> out;
+      net_handover out;
       for (auto& w : st.directions[1 - end].for_down_end) {
         auto kind = st.kind_index(w.message.kind);
         deliver(st, end, w.due, kind, std::move(w.message), out);
@@ -296,9 +294,7 @@ caf::behavior link(link_actor* self, participant_info info, config::network_sett
     st.directions[d].model.emplace(network, tick_seconds, config::derive_seed(link_seed, d));
   return {
       [self](net_send_atom, int from, const mail_stamp& flushed, bool announced,
-             std::vector<net_send_batch>& batches) {
-        carry(self, from, flushed, announced, batches);
-      },
+             net_send_window& window) { carry(self, from, flushed, announced, window); },
       [self](link_cmd_atom, const mail_stamp& stamp, const link_command& cmd) {
         apply(self, stamp, cmd);
         forget_bursts(self->state, stamp.tick);

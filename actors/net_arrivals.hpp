@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <tuple>
+#include <utility>
 #include <vector>
 
-#include "actors/net_delivery.hpp"
+#include "actors/net_handover.hpp"
 #include "actors/ordered_inbox.hpp"
 #include "actors/phase.hpp"
 #include "caf/actor.hpp"
@@ -18,6 +20,11 @@ namespace argus::actors {
 /// arrived (a cut caught it on the wire). Links are not ticked by the clock, so it also holds
 /// the node's turn until every hand-over announced for it has come (docs/network.md,
 /// "Announced hand-overs").
+///
+/// Hand-overs are kept as they came, not copied message by message into one queue: a node
+/// with eight links holds a few dozen messages, and at ten thousand nodes every copy is a
+/// cache miss (bench/RESULTS.md, "Link layer"). A turn scans the due ticks, sorts the few that
+/// are due by stamp, and reads each message in place.
 class net_arrivals {
  public:
   struct arrival {
@@ -32,54 +39,121 @@ class net_arrivals {
     caf::actor clock;
   };
 
-  /// Stores a hand-over `(net_deliver_atom, stamp, announced, from, batch)`: the i-th message
-  /// is stamped (its due tick, network phase, the link, stamp.seq + i). An announced one
-  /// answers what its sender flushed in the turn (stamp.tick, stamp.phase).
-  void put(const mail_stamp& stamp, bool announced, int from, std::vector<net_delivery>& batch) {
+  /// Stores a hand-over `(net_deliver_atom, stamp, announced, from, handover)`, taking its
+  /// storage: the i-th message is stamped (its due tick, network phase, the link,
+  /// stamp.seq + i). An announced one answers what its sender flushed in the turn
+  /// (stamp.tick, stamp.phase).
+  void put(const mail_stamp& stamp, bool announced, int from, net_handover& handover) {
     if (announced) announced_.emplace_back(stamp.tick, stamp.phase);
-    auto seq = stamp.seq;
-    for (auto& d : batch)
-      inbox_.put(mail_stamp{d.due, static_cast<std::uint8_t>(phase::network), stamp.sender, seq++},
-                 arrival{from, std::move(d.message)});
+    if (handover.empty()) return;
+    auto left = handover.size();
+    held_.push_back(held{stamp.sender, stamp.seq, from, left, std::move(handover)});
   }
 
   /// Takes back everything link `link_id` handed over that is due at `from_due` or later.
   void retract(std::uint64_t link_id, std::int64_t from_due) {
-    inbox_.discard_if(
-        [&](const mail_stamp& s) { return s.sender == link_id && s.tick >= from_due; });
+    for (auto& h : held_) {
+      if (h.link != link_id) continue;
+      for (auto& due : h.handover.due)
+        if (due != gone && due >= from_due) {
+          due = gone;
+          --h.left;
+        }
+    }
+    drop_read();
   }
 
   /// Holds turn `t` until the `relayed` hand-overs announced for it (flushed before it) are in.
   void hold(turn t, std::uint32_t relayed) {
-    held_ = std::move(t);
+    held_turn_ = std::move(t);
     relayed_ = relayed;
   }
 
   /// The held turn once everything it waits for has come, else nothing.
   std::optional<turn> take_ready() {
-    if (!held_) return std::nullopt;
-    auto before = [&](const auto& s) { return s < std::make_tuple(held_->tick, held_->phase); };
+    if (!held_turn_) return std::nullopt;
+    auto before = [&](const auto& s) {
+      return s < std::make_tuple(held_turn_->tick, held_turn_->phase);
+    };
     auto have =
         static_cast<std::size_t>(std::count_if(announced_.begin(), announced_.end(), before));
     if (have < relayed_) return std::nullopt;
     std::erase_if(announced_, before);
-    auto t = std::move(held_);
-    held_.reset();
+    auto t = std::move(held_turn_);
+    held_turn_.reset();
     return t;
   }
 
-  /// Everything due before (`tick`, `phase`), in canonical order.
+  /// Calls `f(const mail_stamp&, int from, protocol::net_message&)` for everything due before
+  /// (`tick`, `phase`), in canonical order; each message is read once, then forgotten.
+  template <class F>
+  void for_each_due(std::int64_t tick, std::uint8_t phase, F f) {
+    // A message is stamped in the network phase of its due tick.
+    auto last_due = static_cast<std::uint8_t>(phase::network) < phase ? tick : tick - 1;
+    due_.clear();
+    for (std::uint32_t h = 0; h < held_.size(); ++h) {
+      const auto& dues = held_[h].handover.due;
+      for (std::uint32_t i = 0; i < dues.size(); ++i)
+        if (dues[i] <= last_due) due_.push_back(due_ref{dues[i], held_[h].link, held_[h].seq + i, h, i});
+    }
+    if (due_.empty()) return;
+    std::sort(due_.begin(), due_.end(), [](const due_ref& a, const due_ref& b) {
+      return std::tie(a.due, a.link, a.seq) < std::tie(b.due, b.link, b.seq);
+    });
+    for (const auto& d : due_) {
+      auto& h = held_[d.held];
+      f(mail_stamp{d.due, static_cast<std::uint8_t>(phase::network), d.link, d.seq}, h.from,
+        h.handover.messages[d.index]);
+      h.handover.due[d.index] = gone;
+      --h.left;
+    }
+    drop_read();
+  }
+
+  /// Everything due before (`tick`, `phase`), in canonical order, moved out.
   std::vector<std::pair<mail_stamp, arrival>> take_due(std::int64_t tick, std::uint8_t phase) {
-    return inbox_.take_due(tick, phase);
+    std::vector<std::pair<mail_stamp, arrival>> out;
+    for_each_due(tick, phase, [&](const mail_stamp& s, int from, protocol::net_message& m) {
+      out.emplace_back(s, arrival{from, std::move(m)});
+    });
+    return out;
   }
 
   /// Number of messages held.
-  std::size_t size() const noexcept { return inbox_.size(); }
+  std::size_t size() const noexcept {
+    std::size_t n = 0;
+    for (const auto& h : held_) n += h.left;
+    return n;
+  }
 
  private:
-  ordered_inbox<arrival> inbox_;
+  // Read or retracted; never due, since no tick reaches it.
+  static constexpr std::int64_t gone = std::numeric_limits<std::int64_t>::max();
+
+  struct held {
+    std::uint64_t link = 0;
+    std::uint64_t seq = 0;  // of the first message
+    int from = 0;
+    std::size_t left = 0;  // messages not yet read or retracted
+    net_handover handover;
+  };
+
+  struct due_ref {
+    std::int64_t due;
+    std::uint64_t link;
+    std::uint64_t seq;
+    std::uint32_t held;
+    std::uint32_t index;
+  };
+
+  void drop_read() {
+    std::erase_if(held_, [](const held& h) { return h.left == 0; });
+  }
+
+  std::vector<held> held_;
+  std::vector<due_ref> due_;  // scratch, kept for its capacity
   std::vector<std::tuple<std::int64_t, std::uint8_t>> announced_;  // not yet counted
-  std::optional<turn> held_;
+  std::optional<turn> held_turn_;
   std::uint32_t relayed_ = 0;
 };
 

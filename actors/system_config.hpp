@@ -1,6 +1,10 @@
 #pragma once
 
+#include <cstdlib>
+
+#include "actors/fifo_stealing.hpp"
 #include "actors/type_ids.hpp"
+#include "caf/scheduler/coordinator.hpp"
 
 namespace argus::actors {
 
@@ -13,6 +17,10 @@ class system_config : public caf::actor_system_config {
     set("scheduler.max-threads", static_cast<size_t>(threads));
     set("logger.file-verbosity", caf::atom("quiet"));
     set("logger.console-verbosity", caf::atom("quiet"));
+    if (std::getenv("ARGUS_FIFO"))
+      module_factories.push_back([](caf::actor_system& sys) -> caf::actor_system::module* {
+        return new caf::scheduler::coordinator<fifo_stealing>(sys);
+      });
   }
 };
 

@@ -8,8 +8,8 @@
 
 #include "actors/link_command.hpp"
 #include "actors/link_report.hpp"
-#include "actors/net_delivery.hpp"
-#include "actors/net_send_batch.hpp"
+#include "actors/net_handover.hpp"
+#include "actors/net_send_window.hpp"
 #include "actors/ordered_inbox.hpp"
 #include "actors/participant_info.hpp"
 #include "actors/render_pool.hpp"
@@ -32,10 +32,8 @@ CAF_ADD_TYPE_ID(argus, (argus::actors::link_command))
 CAF_ADD_TYPE_ID(argus, (argus::actors::link_report))
 CAF_ADD_TYPE_ID(argus, (argus::protocol::net_message))
 CAF_ADD_TYPE_ID(argus, (std::vector<argus::protocol::net_message>))
-CAF_ADD_TYPE_ID(argus, (argus::actors::net_delivery))
-CAF_ADD_TYPE_ID(argus, (std::vector<argus::actors::net_delivery>))
-CAF_ADD_TYPE_ID(argus, (argus::actors::net_send_batch))
-CAF_ADD_TYPE_ID(argus, (std::vector<argus::actors::net_send_batch>))
+CAF_ADD_TYPE_ID(argus, (argus::actors::net_handover))
+CAF_ADD_TYPE_ID(argus, (argus::actors::net_send_window))
 CAF_ADD_TYPE_ID(argus, (argus::actors::world_update))
 CAF_ADD_TYPE_ID(argus, (argus::actors::partition_report))
 CAF_ADD_TYPE_ID(argus, (argus::actors::render_request))

@@ -56,17 +56,20 @@ void blast(blaster_actor* self, int node, int burst, const node_links& mine,
            const net_arrivals::turn& t) {
   auto& st = self->state;
   tick_context ctx(participant_ids::camera(node), "n", t.tick, phase::cameras);
-  st.read += st.arrivals.take_due(t.tick, t.phase).size();
+  // Each message read, as a camera reads it: its header, to decide what it is.
+  st.arrivals.for_each_due(t.tick, t.phase, [&](const mail_stamp&, int, protocol::net_message& m) {
+    st.read += m.id != 0 && !m.kind.empty();
+  });
   mail_stamp now{t.tick, t.phase, participant_ids::camera(node), 0};
   for (const auto& l : mine.links) {
-    std::vector<protocol::net_message> batch(static_cast<std::size_t>(burst));
-    for (auto& m : batch) {
+    now.seq = st.mail_seq++;
+    for (int i = 0; i < burst; ++i) {
+      protocol::net_message m;
       m.id = protocol::make_message_id(node, st.seq++);
       m.origin = node;
       m.kind = "bench";
+      st.outbox.add(l.id, l.handle, l.peer, now, std::move(m));
     }
-    now.seq = st.mail_seq++;
-    st.outbox.add(l.id, l.handle, l.peer, now, std::move(batch));
   }
   if (st.outbox.window_ends(t.tick))
     st.outbox.flush(self, node, now, true, [&](std::uint64_t peer) { ctx.relayed_to(peer); });
@@ -83,8 +86,8 @@ caf::behavior blaster(blaster_actor* self, int node, int burst, std::int64_t loo
   };
   return {
       [=](net_deliver_atom, const mail_stamp& stamp, bool announced, int from,
-          std::vector<net_delivery>& batch) {
-        self->state.arrivals.put(stamp, announced, from, batch);
+          net_handover& handover) {
+        self->state.arrivals.put(stamp, announced, from, handover);
         turn_when_ready();
       },
       [](net_retract_atom, std::uint64_t, std::int64_t) {},

@@ -53,8 +53,10 @@ caf::behavior endpoint(caf::event_based_actor* self, endpoint_plan plan, caf::ac
   auto outbox = std::make_shared<link_outbox>(3);
   auto turn = [=](const net_arrivals::turn& t) {
     tick_context ctx(participant_ids::camera(plan.node), "endpoint", t.tick, phase::cameras);
-    for (const auto& [stamp, a] : arrivals->take_due(t.tick, t.phase))
-      log->got.push_back({stamp.tick, std::stoll(a.message.body), a.message.id});
+    arrivals->for_each_due(t.tick, t.phase,
+                           [&](const mail_stamp& stamp, int, protocol::net_message& m) {
+                             log->got.push_back({stamp.tick, std::stoll(m.body), m.id});
+                           });
     mail_stamp now{t.tick, t.phase, participant_ids::camera(plan.node),
                    static_cast<std::uint64_t>(t.tick)};
     if (t.tick >= plan.from_tick && t.tick < plan.to_tick) {
@@ -80,8 +82,8 @@ caf::behavior endpoint(caf::event_based_actor* self, endpoint_plan plan, caf::ac
         return done_atom_v;
       },
       [=](net_deliver_atom, const mail_stamp& stamp, bool announced, int from,
-          std::vector<net_delivery>& batch) {
-        arrivals->put(stamp, announced, from, batch);
+          net_handover& handover) {
+        arrivals->put(stamp, announced, from, handover);
         if (auto t = arrivals->take_ready()) turn(*t);
       },
       [=](net_retract_atom, std::uint64_t from_link, std::int64_t from_due) {

@@ -10,13 +10,12 @@ namespace {
 
 constexpr auto cameras = static_cast<std::uint8_t>(phase::cameras);
 
-std::vector<net_delivery> messages(std::initializer_list<std::int64_t> dues) {
-  std::vector<net_delivery> out;
+net_handover messages(std::initializer_list<std::int64_t> dues) {
+  net_handover out;
   for (auto due : dues) {
-    net_delivery d;
-    d.due = due;
-    d.message.id = static_cast<std::uint64_t>(due);
-    out.push_back(d);
+    protocol::net_message m;
+    m.id = static_cast<std::uint64_t>(due);
+    out.add(due, std::move(m));
   }
   return out;
 }
