@@ -2,7 +2,7 @@
 
 #include <cstdlib>
 
-#include "actors/fifo_stealing.hpp"
+#include "actors/turn_order_scheduling.hpp"
 #include "actors/type_ids.hpp"
 #include "caf/scheduler/coordinator.hpp"
 
@@ -19,7 +19,7 @@ class system_config : public caf::actor_system_config {
     set("logger.console-verbosity", caf::atom("quiet"));
     if (std::getenv("ARGUS_FIFO"))
       module_factories.push_back([](caf::actor_system& sys) -> caf::actor_system::module* {
-        return new caf::scheduler::coordinator<fifo_stealing>(sys);
+        return new caf::scheduler::coordinator<turn_order_scheduling>(sys);
       });
   }
 };
