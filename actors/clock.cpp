@@ -410,10 +410,11 @@ class clock_actor : public caf::event_based_actor {
 
 }  // namespace
 
-bool clock_on_own_thread(unsigned threads, std::size_t participants) {
-  // Where the two lines crossed on this 2-core machine (bench/RESULTS.md, "Clock thread").
+bool clock_on_own_thread(unsigned threads, std::size_t participants, scheduling_order order) {
+  // Where the two lines crossed on this 2-core machine under CAF's order (bench/RESULTS.md,
+  // "Clock thread"); under the turn order they do not cross.
   constexpr std::size_t crossover = 2'000;
-  return threads > 1 && participants >= crossover;
+  return order == scheduling_order::caf_default && threads > 1 && participants >= crossover;
 }
 
 caf::actor spawn_clock(caf::actor_system& system, clock_settings settings, caf::actor recorder,

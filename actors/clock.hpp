@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "actors/scheduling_order.hpp"
 #include "caf/fwd.hpp"
 
 namespace argus::actors {
@@ -25,16 +26,20 @@ struct clock_settings {
   bool own_thread = false;
 };
 
-/// Whether a run with `threads` scheduler workers and `participants` participants that the
-/// clock ticks (not `wake_mode::never` ones) should give the clock a thread of its own. On a
-/// worker, the clock goes idle between acks and is resumed by whichever worker sent the next
-/// one, so with thousands of participants its state crosses cores thousands of times per tick
-/// (bench/RESULTS.md, link layer: 10,000 cameras on 2 threads, 0.41 -> 0.79 M messages/s on
-/// its own thread; at 1,000 cameras the two are within the noise). With few participants the
-/// opposite holds: every phase is a short round trip, and waking a thread of its own costs
-/// more than the migration. Never with one worker (one more thread would share its core) and
-/// never under CAF's test coordinator, which runs only scheduled actors.
-bool clock_on_own_thread(unsigned threads, std::size_t participants);
+/// Whether a run with `threads` scheduler workers in `order` and `participants` participants
+/// that the clock ticks (not `wake_mode::never` ones) should give the clock a thread of its
+/// own.
+///
+/// Under CAF's order, a worker resumes the clock at once for every ack, so with thousands of
+/// participants its state crosses cores thousands of times per tick: from 2,000 participants
+/// on 2 threads a thread of its own paid (bench/RESULTS.md, "Clock thread"). Under the turn
+/// order the clock waits behind the turn's other work and reads a phase's acks in a few
+/// activations; on a worker it is then as fast or faster at every size measured (10,000
+/// cameras on 2 threads: 1.14 against 0.96 M messages/s, bench/RESULTS.md, "Turn order"), and a
+/// thread of its own only adds a third thread to two cores. Never with one worker, and never
+/// under CAF's test coordinator, which runs only scheduled actors.
+bool clock_on_own_thread(unsigned threads, std::size_t participants,
+                         scheduling_order order = scheduling_order::turn_order);
 
 /// Spawns the lockstep virtual-time clock (DESIGN.md, "Time").
 ///

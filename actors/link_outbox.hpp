@@ -78,7 +78,8 @@ class link_outbox {
     if (last_ >= queues_.size() || queues_[last_].link_id != link_id) {
       auto it = std::find_if(queues_.begin(), queues_.end(),
                              [&](const queue& q) { return q.link_id == link_id; });
-      if (it == queues_.end()) it = queues_.insert(queues_.end(), queue{link_id, link, peer_id, 0, {}});
+      if (it == queues_.end())
+        it = queues_.insert(queues_.end(), queue{link_id, link, peer_id, 0, {}});
       last_ = static_cast<std::size_t>(it - queues_.begin());
     }
     auto& q = queues_[last_];

@@ -94,7 +94,8 @@ class net_arrivals {
     for (std::uint32_t h = 0; h < held_.size(); ++h) {
       const auto& dues = held_[h].handover.due;
       for (std::uint32_t i = 0; i < dues.size(); ++i)
-        if (dues[i] <= last_due) due_.push_back(due_ref{dues[i], held_[h].link, held_[h].seq + i, h, i});
+        if (dues[i] <= last_due)
+          due_.push_back(due_ref{dues[i], held_[h].link, held_[h].seq + i, h, i});
     }
     if (due_.empty()) return;
     std::sort(due_.begin(), due_.end(), [](const due_ref& a, const due_ref& b) {
@@ -151,7 +152,7 @@ class net_arrivals {
   }
 
   std::vector<held> held_;
-  std::vector<due_ref> due_;  // scratch, kept for its capacity
+  std::vector<due_ref> due_;                                       // scratch, kept for its capacity
   std::vector<std::tuple<std::int64_t, std::uint8_t>> announced_;  // not yet counted
   std::optional<turn> held_turn_;
   std::uint32_t relayed_ = 0;

@@ -1,24 +1,27 @@
 #pragma once
 
-#include <cstdlib>
-
+#include "actors/scheduling_order.hpp"
 #include "actors/turn_order_scheduling.hpp"
 #include "actors/type_ids.hpp"
 #include "caf/scheduler/coordinator.hpp"
+#include "caf/scheduler/test_coordinator.hpp"
 
 namespace argus::actors {
 
 /// The CAF configuration every Argus actor system uses: our message types registered,
-/// `threads` scheduler workers, and CAF's own log files off.
+/// `threads` scheduler workers in `order`, and CAF's own log files off.
 class system_config : public caf::actor_system_config {
  public:
-  explicit system_config(unsigned threads) {
+  explicit system_config(unsigned threads, scheduling_order order = scheduling_order::turn_order) {
     add_message_types<caf::id_block::argus>();
     set("scheduler.max-threads", static_cast<size_t>(threads));
     set("logger.file-verbosity", caf::atom("quiet"));
     set("logger.console-verbosity", caf::atom("quiet"));
-    if (std::getenv("ARGUS_FIFO"))
+    if (order == scheduling_order::turn_order)
       module_factories.push_back([](caf::actor_system& sys) -> caf::actor_system::module* {
+        // CAF's deterministic test coordinator, where a test fixture asks for it.
+        auto policy = caf::get_or(sys.config(), "scheduler.policy", caf::atom("stealing"));
+        if (policy == caf::atom("testing")) return new caf::scheduler::test_coordinator(sys);
         return new caf::scheduler::coordinator<turn_order_scheduling>(sys);
       });
   }

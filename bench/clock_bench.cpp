@@ -31,8 +31,8 @@ caf::behavior bare_participant(caf::event_based_actor* self, std::uint64_t id) {
 
 // Returns the wall seconds the clock reports for `ticks` ticks.
 double run_clock(std::int64_t participants, unsigned threads, bool busy, bool own_thread,
-                 std::int64_t ticks) {
-  system_config cfg(threads);
+                 scheduling_order order, std::int64_t ticks) {
+  system_config cfg(threads, order);
   caf::actor_system sys{cfg};
   recorder_settings rs;
   rs.output_dir = std::filesystem::temp_directory_path() / "argus-clock-bench";
@@ -60,12 +60,13 @@ void bm_clock(benchmark::State& state) {
   auto threads = static_cast<unsigned>(state.range(1));
   bool busy = state.range(2) != 0;
   bool own_thread = state.range(3) != 0;
+  auto order = state.range(4) != 0 ? scheduling_order::caf_default : scheduling_order::turn_order;
   // Enough ticks for a stable figure, few enough to finish when each tick is expensive.
   std::int64_t ticks = busy ? std::clamp<std::int64_t>(400'000 / participants, 20, 20'000) : 20'000;
   double total_wall = 0.0;
   std::int64_t total_ticks = 0;
   for (auto _ : state) {
-    double wall = run_clock(participants, threads, busy, own_thread, ticks);
+    double wall = run_clock(participants, threads, busy, own_thread, order, ticks);
     state.SetIterationTime(wall);
     total_wall += wall;
     total_ticks += ticks;
@@ -76,17 +77,19 @@ void bm_clock(benchmark::State& state) {
 }
 
 void clock_args(benchmark::internal::Benchmark* b) {
-  // With 2 workers, the clock on a worker (clock_thread 0) and on its own thread (1).
-  for (int busy : {0, 1})
-    for (int threads : {1, 2})
-      for (int own : {0, 1})
-        for (int n : {10, 100, 1000, 10000})
-          if (threads > 1 || own == 0) b->Args({n, threads, busy, own});
+  // With 2 workers, the clock on a worker (clock_thread 0) and on its own thread (1); CAF's
+  // scheduling order (caf_order 1) as the baseline for Argus's turn order (0).
+  for (int caf_order : {0, 1})
+    for (int busy : {0, 1})
+      for (int threads : {1, 2})
+        for (int own : {0, 1})
+          for (int n : {10, 100, 1000, 10000})
+            if (threads > 1 || own == 0) b->Args({n, threads, busy, own, caf_order});
 }
 
 BENCHMARK(bm_clock)
     ->Apply(clock_args)
-    ->ArgNames({"participants", "threads", "busy", "clock_thread"})
+    ->ArgNames({"participants", "threads", "busy", "clock_thread", "caf_order"})
     ->UseManualTime()
     ->Unit(benchmark::kMillisecond)
     ->Iterations(3);

@@ -3,7 +3,8 @@
 // the worst case for batching; K = 2, 4, 8: bursts such as a query to every neighbour plus
 // forwarding) through an outbox, as camera nodes do; links draw Table 2 delay and loss and
 // deliver; every node reads what arrives, as a camera node does. 1 and 2 scheduler threads;
-// with 2, the clock on a worker and on its own thread.
+// with 2, the clock on a worker and on its own thread. At burst 1, under CAF's scheduling order
+// as well as Argus's turn order (actors/turn_order_scheduling.hpp).
 //
 //   build/bench/link_bench --benchmark_counters_tabular=true
 
@@ -128,8 +129,8 @@ struct outcome {
 };
 
 outcome run_links(const config::scenario& s, const protocol::topology& topo, unsigned threads,
-                  bool own_thread, int burst, std::int64_t ticks) {
-  system_config cfg(threads);
+                  bool own_thread, scheduling_order order, int burst, std::int64_t ticks) {
+  system_config cfg(threads, order);
   caf::actor_system sys{cfg};
   recorder_settings rs;
   rs.output_dir = std::filesystem::temp_directory_path() / "argus-link-bench";
@@ -181,6 +182,7 @@ void bm_links(benchmark::State& state) {
   auto threads = static_cast<unsigned>(state.range(1));
   auto burst = static_cast<int>(state.range(2));
   bool own_thread = state.range(3) != 0;
+  auto order = state.range(4) != 0 ? scheduling_order::caf_default : scheduling_order::turn_order;
   auto s = graph(nodes);
   protocol::topology topo(s);
   // At least 30 ticks (ten lookahead windows), so that the first tick (every link joins) and
@@ -191,7 +193,7 @@ void bm_links(benchmark::State& state) {
   double wall = 0;
   std::uint64_t messages = 0;
   for (auto _ : state) {
-    auto o = run_links(s, topo, threads, own_thread, burst, ticks);
+    auto o = run_links(s, topo, threads, own_thread, order, burst, ticks);
     state.SetIterationTime(o.wall);
     wall += o.wall;
     messages += o.messages;
@@ -201,18 +203,21 @@ void bm_links(benchmark::State& state) {
   state.counters["mean_degree"] = 2.0 * static_cast<double>(topo.links().size()) / nodes;
 }
 
-// With 2 workers, the clock on a worker (clock_thread 0) and on its own thread (1).
+// With 2 workers, the clock on a worker (clock_thread 0) and on its own thread (1). At burst
+// 1, CAF's scheduling order too (caf_order 1): the baseline for Argus's turn order (0).
 void link_args(benchmark::internal::Benchmark* b) {
   for (int burst : {1, 2, 4, 8})
-    for (int threads : {1, 2})
-      for (int own : {0, 1})
-        for (int nodes : {100, 1000, 10000})
-          if (threads > 1 || own == 0) b->Args({nodes, threads, burst, own});
+    for (int caf_order : {0, 1})
+      for (int threads : {1, 2})
+        for (int own : {0, 1})
+          for (int nodes : {100, 1000, 10000})
+            if ((threads > 1 || own == 0) && (burst == 1 || caf_order == 0))
+              b->Args({nodes, threads, burst, own, caf_order});
 }
 
 BENCHMARK(bm_links)
     ->Apply(link_args)
-    ->ArgNames({"nodes", "threads", "burst", "clock_thread"})
+    ->ArgNames({"nodes", "threads", "burst", "clock_thread", "caf_order"})
     ->UseManualTime()
     ->Unit(benchmark::kMillisecond)
     ->Iterations(2);
