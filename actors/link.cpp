@@ -42,7 +42,7 @@ struct handed_over {
 
 // The accounting of one message kind on this link.
 struct kind_counts {
-  std::string kind;
+  protocol::message_kind kind;
   protocol::message_counts counts;
 };
 
@@ -93,7 +93,7 @@ struct link_state {
   }
 
   // Index of `kind` in `kinds`, added on first use.
-  std::uint16_t kind_index(const std::string& kind) {
+  std::uint16_t kind_index(protocol::message_kind kind) {
     if (last_kind < kinds.size() && kinds[last_kind].kind == kind) return last_kind;
     auto it = std::find_if(kinds.begin(), kinds.end(),
                            [&](const kind_counts& k) { return k.kind == kind; });
@@ -102,13 +102,13 @@ struct link_state {
     return last_kind;
   }
 
-  protocol::message_counts& counter(const std::string& kind) {
+  protocol::message_counts& counter(protocol::message_kind kind) {
     return kinds[kind_index(kind)].counts;
   }
 
   protocol::accounting_by_kind accounting() const {
     protocol::accounting_by_kind out;
-    for (const auto& k : kinds) out[k.kind] += k.counts;
+    for (const auto& k : kinds) out[k.kind.name()] += k.counts;
     return out;
   }
 };
@@ -306,12 +306,12 @@ caf::behavior link(link_actor* self, participant_info info, config::network_sett
         // Held for an end that is down: dropped if it was due within the run, else in flight.
         for (const auto& dir : st.directions)
           for (const auto& w : dir.for_down_end)
-            ++(w.due < end_tick ? counts[w.message.kind].dropped
-                                : counts[w.message.kind].in_flight);
+            ++(w.due < end_tick ? counts[w.message.kind.name()].dropped
+                                : counts[w.message.kind.name()].in_flight);
         // Handed over but due after the run: the node never read them.
         for (const auto& h : st.handed) {
           if (h.due < end_tick) continue;
-          auto& c = counts[st.kinds[h.kind].kind];
+          auto& c = counts[st.kinds[h.kind].kind.name()];
           --c.delivered;
           ++c.in_flight;
         }

@@ -3,6 +3,8 @@
 #include <cstdint>
 #include <string>
 
+#include "protocol/message_kind.hpp"
+
 namespace argus::protocol {
 
 /// Destination of a message to every node within the hop limit.
@@ -11,17 +13,17 @@ inline constexpr int broadcast = -1;
 /// One message between camera nodes as the network carries it (Sections I-B, IV; Table 2).
 /// `id` is unique per origin (origin << 32 | per-origin counter) so that flooding can suppress
 /// duplicates; `hops` counts the links crossed so far.
+///
+/// 64 bytes, one cache line: the link layer moves every message several times per hop.
 struct net_message {
   std::uint64_t id = 0;
-  int origin = 0;
-  int destination = broadcast;
-  std::uint8_t hops = 0;
-  std::uint8_t max_hops = 3;
   /// The id of the request this message answers; 0 when it answers none.
   std::uint64_t reply_to = 0;
-  /// Message type as the paper names them: "queryrelevance", "relevance", "join", "status",
-  /// "demote", ... and "hello" for neighbour discovery.
-  std::string kind;
+  int origin = 0;
+  int destination = broadcast;
+  message_kind kind;
+  std::uint8_t hops = 0;
+  std::uint8_t max_hops = 3;
   /// The protocol payload, serialised by protocol/.
   std::string body;
 
@@ -35,7 +37,9 @@ constexpr std::uint64_t make_message_id(int origin, std::uint32_t seq) noexcept 
 
 template <class Inspector>
 typename Inspector::result_type inspect(Inspector& f, net_message& x) {
-  return f(x.id, x.origin, x.destination, x.hops, x.max_hops, x.reply_to, x.kind, x.body);
+  return f(x.id, x.reply_to, x.origin, x.destination, x.kind, x.hops, x.max_hops, x.body);
 }
 
 }  // namespace argus::protocol
+
+static_assert(sizeof(argus::protocol::net_message) == 64, "a network message is one cache line");

@@ -39,7 +39,7 @@ struct ideal_network {
       inbox[id].clear();
       node.tick(tick);
       for (auto& out : node.take_outgoing()) {
-        ++transmissions[out.message.kind];
+        ++transmissions[out.message.kind.name()];
         auto m = out.message;
         ++m.hops;
         next[out.neighbour].emplace_back(id, m);
