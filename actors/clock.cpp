@@ -109,9 +109,11 @@ class clock_actor : public caf::event_based_actor {
   // skips any id whose entry is gone or no longer booked for that slot. That keeps booking a
   // push_back, where erasing from the later slot would cost a search per re-booking.
   void book(std::uint64_t id, std::int64_t at) {
-    auto it = participants_.find(id);
-    if (it == participants_.end() || it->second.info.mode != wake_mode::on_demand) return;
-    auto& e = it->second;
+    if (auto it = participants_.find(id); it != participants_.end()) book(it->second, id, at);
+  }
+
+  void book(entry& e, std::uint64_t id, std::int64_t at) {
+    if (e.info.mode != wake_mode::on_demand) return;
     if (e.booked >= 0 && e.booked <= at) return;
     calendar_[index(e.info.tick_phase)][at].push_back(id);
     e.booked = at;
@@ -178,7 +180,8 @@ class clock_actor : public caf::event_based_actor {
       return;
     }
     for (auto& ev : ack.events) batch_.push_back(std::move(ev));
-    if (ack.next_wakeup != no_wakeup) book(ack.participant, std::max(ack.next_wakeup, tick_ + 1));
+    if (ack.next_wakeup != no_wakeup)
+      book(it->second, ack.participant, std::max(ack.next_wakeup, tick_ + 1));
     for (auto id : ack.woken) wake_for_mail(id);
     // A receiver that is gone (crashed, retired) is owed nothing: its links know it is down.
     for (auto id : ack.relayed)
@@ -195,9 +198,9 @@ class clock_actor : public caf::event_based_actor {
   entry* wake_for_mail(std::uint64_t id) {
     auto target = participants_.find(id);
     if (target == participants_.end()) return nullptr;
-    auto later = index(target->second.info.tick_phase) > phase_;
-    book(id, later ? tick_ : tick_ + 1);
-    return &target->second;
+    auto& e = target->second;
+    book(e, id, index(e.info.tick_phase) > phase_ ? tick_ : tick_ + 1);
+    return &e;
   }
 
   void on_down(const caf::down_msg& msg) {
