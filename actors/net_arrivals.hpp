@@ -47,18 +47,21 @@ class net_arrivals {
     if (announced) announced_.emplace_back(stamp.tick, stamp.phase);
     if (handover.empty()) return;
     auto left = handover.size();
+    earliest_.push_back(*std::min_element(handover.due.begin(), handover.due.end()));
     held_.push_back(held{stamp.sender, stamp.seq, from, left, std::move(handover)});
   }
 
   /// Takes back everything link `link_id` handed over that is due at `from_due` or later.
   void retract(std::uint64_t link_id, std::int64_t from_due) {
-    for (auto& h : held_) {
+    for (std::size_t i = 0; i < held_.size(); ++i) {
+      auto& h = held_[i];
       if (h.link != link_id) continue;
       for (auto& due : h.handover.due)
         if (due != gone && due >= from_due) {
           due = gone;
           --h.left;
         }
+      earliest_[i] = earliest_of(h);
     }
     drop_read();
   }
@@ -91,7 +94,9 @@ class net_arrivals {
     // A message is stamped in the network phase of its due tick.
     auto last_due = static_cast<std::uint8_t>(phase::network) < phase ? tick : tick - 1;
     due_.clear();
+    // Only hand-overs with something due are opened: the rest wait, unread, for later turns.
     for (std::uint32_t h = 0; h < held_.size(); ++h) {
+      if (earliest_[h] > last_due) continue;
       const auto& dues = held_[h].handover.due;
       for (std::uint32_t i = 0; i < dues.size(); ++i)
         if (dues[i] <= last_due)
@@ -108,6 +113,8 @@ class net_arrivals {
       h.handover.due[d.index] = gone;
       --h.left;
     }
+    for (std::uint32_t h = 0; h < held_.size(); ++h)
+      if (earliest_[h] <= last_due) earliest_[h] = earliest_of(held_[h]);
     drop_read();
   }
 
@@ -147,11 +154,31 @@ class net_arrivals {
     std::uint32_t index;
   };
 
+  static std::int64_t earliest_of(const held& h) {
+    return *std::min_element(h.handover.due.begin(), h.handover.due.end());
+  }
+
+  // Hand-overs with nothing left to read go; the order of the rest does not matter (a turn
+  // sorts what is due by stamp), so the last takes a leaver's place.
   void drop_read() {
-    std::erase_if(held_, [](const held& h) { return h.left == 0; });
+    for (std::size_t i = 0; i < held_.size();) {
+      if (earliest_[i] != gone) {
+        ++i;
+        continue;
+      }
+      if (i + 1 != held_.size()) {
+        held_[i] = std::move(held_.back());
+        earliest_[i] = earliest_.back();
+      }
+      held_.pop_back();
+      earliest_.pop_back();
+    }
   }
 
   std::vector<held> held_;
+  // The earliest due tick still unread in each hand-over (`gone` when none), beside it: a
+  // turn reads this, not the hand-overs, to find what is due.
+  std::vector<std::int64_t> earliest_;
   std::vector<due_ref> due_;                                       // scratch, kept for its capacity
   std::vector<std::tuple<std::int64_t, std::uint8_t>> announced_;  // not yet counted
   std::optional<turn> held_turn_;

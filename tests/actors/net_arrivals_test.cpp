@@ -80,5 +80,24 @@ TEST(net_arrivals, messages_are_read_at_their_due_tick_in_canonical_order_unless
   EXPECT_EQ(rest[1].first.tick, 9);
 }
 
+TEST(net_arrivals, each_message_is_read_once_at_its_due_tick_whatever_order_it_came_in) {
+  net_arrivals arrivals;
+  // Reordered and duplicated mail: due ticks in no order within a hand-over.
+  auto a = messages({9, 6, 12, 6});
+  arrivals.put(mail_stamp{3, cameras, 100, 0}, true, 1, a);
+  auto b = messages({7, 11});
+  arrivals.put(mail_stamp{3, cameras, 200, 0}, true, 2, b);
+  std::vector<std::int64_t> read;
+  for (std::int64_t tick = 4; tick <= 13; ++tick) {
+    for (const auto& [stamp, m] : arrivals.take_due(tick, cameras)) {
+      EXPECT_EQ(stamp.tick, tick);  // not a tick late, not early
+      read.push_back(static_cast<std::int64_t>(m.message.id));
+    }
+    if (tick == 8) arrivals.retract(200, 11);  // link 200 cut: its message due at 11 is gone
+  }
+  EXPECT_EQ(read, (std::vector<std::int64_t>{6, 6, 7, 9, 12}));
+  EXPECT_EQ(arrivals.size(), 0u);
+}
+
 }  // namespace
 }  // namespace argus::actors
