@@ -27,11 +27,6 @@ namespace argus::actors {
 /// are due by stamp, and reads each message in place.
 class net_arrivals {
  public:
-  struct arrival {
-    int from = 0;
-    protocol::net_message message;
-  };
-
   /// A turn the clock gave: answer `clock` once it is taken.
   struct turn {
     std::int64_t tick = 0;
@@ -46,9 +41,8 @@ class net_arrivals {
   void put(const mail_stamp& stamp, bool announced, int from, net_handover& handover) {
     if (announced) announced_.emplace_back(stamp.tick, stamp.phase);
     if (handover.empty()) return;
-    auto left = handover.size();
     earliest_.push_back(*std::min_element(handover.due.begin(), handover.due.end()));
-    held_.push_back(held{stamp.sender, stamp.seq, from, left, std::move(handover)});
+    held_.push_back(held{stamp.sender, stamp.seq, from, std::move(handover)});
   }
 
   /// Takes back everything link `link_id` handed over that is due at `from_due` or later.
@@ -57,10 +51,7 @@ class net_arrivals {
       auto& h = held_[i];
       if (h.link != link_id) continue;
       for (auto& due : h.handover.due)
-        if (due != gone && due >= from_due) {
-          due = gone;
-          --h.left;
-        }
+        if (due >= from_due) due = gone;
       earliest_[i] = earliest_of(h);
     }
     drop_read();
@@ -111,26 +102,18 @@ class net_arrivals {
       f(mail_stamp{d.due, static_cast<std::uint8_t>(phase::network), d.link, d.seq}, h.from,
         h.handover.messages[d.index]);
       h.handover.due[d.index] = gone;
-      --h.left;
     }
     for (std::uint32_t h = 0; h < held_.size(); ++h)
       if (earliest_[h] <= last_due) earliest_[h] = earliest_of(held_[h]);
     drop_read();
   }
 
-  /// Everything due before (`tick`, `phase`), in canonical order, moved out.
-  std::vector<std::pair<mail_stamp, arrival>> take_due(std::int64_t tick, std::uint8_t phase) {
-    std::vector<std::pair<mail_stamp, arrival>> out;
-    for_each_due(tick, phase, [&](const mail_stamp& s, int from, protocol::net_message& m) {
-      out.emplace_back(s, arrival{from, std::move(m)});
-    });
-    return out;
-  }
-
   /// Number of messages held.
   std::size_t size() const noexcept {
     std::size_t n = 0;
-    for (const auto& h : held_) n += h.left;
+    for (const auto& h : held_)
+      n += static_cast<std::size_t>(std::count_if(h.handover.due.begin(), h.handover.due.end(),
+                                                  [](std::int64_t d) { return d != gone; }));
     return n;
   }
 
@@ -142,8 +125,7 @@ class net_arrivals {
     std::uint64_t link = 0;
     std::uint64_t seq = 0;  // of the first message
     int from = 0;
-    std::size_t left = 0;  // messages not yet read or retracted
-    net_handover handover;
+    net_handover handover;  // a message read or retracted has its due tick set to `gone`
   };
 
   struct due_ref {
