@@ -31,11 +31,13 @@ struct waiting {
   protocol::net_message message;
 };
 
-// A message handed to a node ahead of its due tick: still ours to account for, until it is
-// due, should a cut take it back or the node go down first. Small: a busy link holds a few
-// lookaheads' worth.
-struct handed_over {
+// Messages handed to a node ahead of their due tick: still ours to account for, until due,
+// should a cut take them back or the node go down first. Counted by (due tick, kind, end), not
+// listed one by one: what is on the wire is due within the longest delay, so a busy link holds
+// a few dozen of these (a cache line or two per direction), whatever it carries.
+struct handed_count {
   std::int64_t due = 0;
+  std::uint32_t count = 0;
   std::uint16_t kind = 0;  // index into link_state::kinds
   std::uint8_t to = 0;
 };
@@ -70,9 +72,8 @@ struct link_state {
   std::array<direction, 2> directions;  // by sending end
   bool reorder = false;
   std::int64_t lookahead = 1;
-  // In no order; entries due before the current tick are dead weight, pruned only now and
-  // then (pruning reads every entry: more cache lines than the append it would save).
-  std::vector<handed_over> handed;
+  // In no order; those due before the tick the link last read mail in are pruned then.
+  std::vector<handed_count> handed;
   // Sent before this tick and the link was, or later got, cut: lost. Max while cut; the heal's
   // tick after. A batch can arrive after a cut or heal stamped later than it (an outbox hands
   // over once per lookahead), so a message is judged by when it was sent, not when read.
@@ -122,11 +123,11 @@ std::size_t end_of(const link_state& st, int node) {
 // Hand-overs to end `to` (both ends when `to` is 2) due at `from_due` or later never reach
 // their node: recount them from delivered to `lost` or `dropped`.
 void recount_handed(link_state& st, std::size_t to, std::int64_t from_due, bool as_lost) {
-  std::erase_if(st.handed, [&](const handed_over& h) {
+  std::erase_if(st.handed, [&](const handed_count& h) {
     if (h.due < from_due || (to != 2 && h.to != to)) return false;
     auto& c = st.kinds[h.kind].counts;
-    --c.delivered;
-    ++(as_lost ? c.lost : c.dropped);
+    c.delivered -= h.count;
+    (as_lost ? c.lost : c.dropped) += h.count;
     return true;
   });
 }
@@ -141,12 +142,23 @@ void drop_overdue(link_state& st, std::size_t to, std::int64_t tick) {
   });
 }
 
+// Counts a message of kind index `kind` as delivered to end `to`, due at `due`.
+void count_delivered(link_state& st, std::size_t to, std::int64_t due, std::uint16_t kind) {
+  ++st.kinds[kind].counts.delivered;
+  auto it = std::find_if(st.handed.begin(), st.handed.end(), [&](const handed_count& h) {
+    return h.due == due && h.kind == kind && h.to == to;
+  });
+  if (it != st.handed.end())
+    ++it->count;
+  else
+    st.handed.push_back(handed_count{due, 1, kind, static_cast<std::uint8_t>(to)});
+}
+
 // Counts `message` (of kind index `kind`) as delivered to end `to`, due at `due`, and adds it
 // to `out`.
 void deliver(link_state& st, std::size_t to, std::int64_t due, std::uint16_t kind,
              protocol::net_message&& message, net_handover& out) {
-  ++st.kinds[kind].counts.delivered;
-  st.handed.push_back(handed_over{due, kind, static_cast<std::uint8_t>(to)});
+  count_delivered(st, to, due, kind);
   ++message.hops;
   out.add(due, std::move(message));
 }
@@ -165,61 +177,90 @@ void hand_over(link_actor* self, std::size_t to, mail_stamp stamp, bool announce
                     st.ends[1 - to].node, std::move(out));
 }
 
-// Decides the fate of `message`, sent by end `from` at `sent_tick`: lost, or delivered after
-// a delay (into `out`, or held if the receiving end is down), and perhaps duplicated. One
-// draw set per message whatever its fate.
-void accept(link_state& st, std::size_t from, std::int64_t sent_tick,
-            protocol::net_message&& message, net_handover& out) {
+// The fate of one message: lost, or due at `due` and, when duplicated, again at `again`.
+struct verdict {
+  bool lost = true;
+  std::int64_t due = 0;
+  std::optional<std::int64_t> again;
+};
+
+// Judges a message of kind index `kind` sent by end `from` at `sent_tick`, and counts it sent,
+// lost or duplicated. One draw set per message whatever its fate.
+verdict judge(link_state& st, std::size_t from, std::int64_t sent_tick, std::uint16_t kind) {
   auto& dir = st.directions[from];
-  auto to = 1 - from;
-  auto kind = st.kind_index(message.kind);
   auto& c = st.kinds[kind].counts;
   ++c.sent;
   auto fate = dir.model->draw(st.loss_at(sent_tick, dir.model->loss()));
+  verdict v;
   // A message read after a cut that came later than it was on the wire when the link was cut:
   // everything it could be due at is after the cut (due >= sent + lookahead > cut tick).
   if (fate.lost || sent_tick < st.cut_until) {
     ++c.lost;
-    return;
+    return v;
   }
-  auto due = sent_tick + fate.delay_ticks;
-  if (!st.reorder) due = std::max(due, dir.last_due);
-  dir.last_due = due;
-  // Delivered to the node, or held for it while it is down.
-  auto place = [&](std::int64_t at, protocol::net_message&& m) {
-    if (st.ends[to].up)
-      deliver(st, to, at, kind, std::move(m), out);
-    else
-      dir.for_down_end.push_back(waiting{at, std::move(m)});
-  };
-  if (!fate.duplicated) {
-    place(due, std::move(message));
-    return;
+  v.lost = false;
+  v.due = sent_tick + fate.delay_ticks;
+  if (!st.reorder) v.due = std::max(v.due, dir.last_due);
+  dir.last_due = v.due;
+  if (fate.duplicated) {
+    ++c.duplicated;
+    v.again = std::max(v.due, sent_tick + fate.duplicate_delay_ticks);
   }
-  ++c.duplicated;
-  place(due, protocol::net_message(message));
-  place(std::max(due, sent_tick + fate.duplicate_delay_ticks), std::move(message));
+  return v;
 }
 
 // What end `from` flushed in the turn `flushed`: every message's fate is decided now and what
 // survives goes to the other end at once, each stamped with its due tick (the node reads it
 // then). Nothing in it is due before the tick after the flush (it was sent at most a lookahead
 // earlier), so the hand-over is in time; the clock knows of it when it was `announced`.
+//
+// The survivors stay where the window brought them (a hand-over takes over the window's
+// storage): at ten thousand nodes a copy into fresh memory is a cache miss per message.
 void carry(link_actor* self, int from_node, const mail_stamp& flushed, bool announced,
            net_send_window& window) {
   auto& st = self->state;
   auto from = end_of(st, from_node);
   auto to = 1 - from;
+  auto& dir = st.directions[from];
+  bool up = st.ends[to].up;
   // Nothing due before this turn can be taken back by what comes later.
-  if (st.handed.size() >= 64)
-    std::erase_if(st.handed, [&](const handed_over& h) { return h.due < flushed.tick; });
-  if (!st.ends[to].up) drop_overdue(st, to, flushed.tick);
+  std::erase_if(st.handed, [&](const handed_count& h) { return h.due < flushed.tick; });
+  if (!up) drop_overdue(st, to, flushed.tick);
+  auto& in = window.messages;
   net_handover out;
-  if (st.ends[to].up) out.reserve(window.messages.size());
+  if (up) out.due.reserve(in.size());
+  net_handover again;  // second copies of duplicated messages, after the rest
+  std::size_t kept = 0;
+  auto place = [&](std::int64_t due, std::uint16_t kind, protocol::net_message&& m,
+                   net_handover* elsewhere) {
+    if (!up) {
+      dir.for_down_end.push_back(waiting{due, std::move(m)});
+    } else if (elsewhere) {
+      deliver(st, to, due, kind, std::move(m), *elsewhere);
+    } else {
+      count_delivered(st, to, due, kind);
+      ++m.hops;
+      if (&in[kept] != &m) in[kept] = std::move(m);
+      out.due.push_back(due);
+      ++kept;
+    }
+  };
   std::uint32_t i = 0;
-  for (const auto& turn : window.turns)
-    for (; i < turn.end; ++i) accept(st, from, turn.stamp.tick, std::move(window.messages[i]), out);
-  if (st.ends[to].up) hand_over(self, to, flushed, announced, out);
+  for (const auto& turn : window.turns) {
+    for (; i < turn.end; ++i) {
+      auto kind = st.kind_index(in[i].kind);
+      auto v = judge(st, from, turn.stamp.tick, kind);
+      if (v.lost) continue;
+      if (v.again) place(*v.again, kind, protocol::net_message(in[i]), &again);
+      place(v.due, kind, std::move(in[i]), nullptr);
+    }
+  }
+  if (!up) return;
+  in.erase(in.begin() + static_cast<std::ptrdiff_t>(kept), in.end());
+  out.messages = std::move(in);
+  for (std::size_t k = 0; k < again.size(); ++k)
+    out.add(again.due[k], std::move(again.messages[k]));
+  hand_over(self, to, flushed, announced, out);
 }
 
 void apply(link_actor* self, const mail_stamp& stamp, const link_command& cmd) {
@@ -312,8 +353,8 @@ caf::behavior link(link_actor* self, participant_info info, config::network_sett
         for (const auto& h : st.handed) {
           if (h.due < end_tick) continue;
           auto& c = counts[st.kinds[h.kind].kind.name()];
-          --c.delivered;
-          ++c.in_flight;
+          c.delivered -= h.count;
+          c.in_flight += h.count;
         }
         return link_report{st.info.name, std::move(counts)};
       },

@@ -7,6 +7,12 @@
 namespace argus::protocol {
 namespace {
 
+// Interned once: beacons go out every heartbeat from every node.
+message_kind hello_kind() {
+  static const message_kind kind{"hello"};
+  return kind;
+}
+
 std::int64_t ticks_of(config::seconds d, config::seconds tick) {
   return std::max<std::int64_t>(1, static_cast<std::int64_t>(std::llround(d / tick)));
 }
@@ -47,7 +53,7 @@ void node_network::refresh_live() {
 
 void node_network::receive(std::int64_t tick, int from, const net_message& m) {
   heard(tick, from);
-  if (m.kind == "hello") return;  // its whole job was to be heard
+  if (m.kind == hello_kind()) return;  // its whole job was to be heard
   auto d = router_.receive(m, from, live_);
   if (d.deliver && m.reply_to != 0) open_requests_.erase(m.reply_to);
   route(m, d);
@@ -85,7 +91,7 @@ void node_network::tick(std::int64_t tick) {
     hello.origin = self_;
     hello.destination = broadcast;
     hello.max_hops = 1;
-    hello.kind = "hello";
+    hello.kind = hello_kind();
     for (int n : attached_) outgoing_.push_back({n, hello});
   }
 }
