@@ -19,8 +19,8 @@ namespace argus::actors {
 namespace {
 
 struct endpoint {
-  int node = 0;
   caf::actor handle;
+  int node = 0;
   bool up = false;
 };
 
@@ -59,31 +59,34 @@ struct loss_burst {
 // in the same phase, and which reaches the link first is up to the threads) with the same
 // outcome.
 struct direction {
-  std::optional<protocol::link_model> model;
-  std::int64_t last_due = 0;          // for FIFO delivery
-  std::uint64_t handed_seq = 0;       // stamps what the receiver reads in canonical order
-  std::vector<waiting> for_down_end;  // sent while the receiving end was down
+  pcg64 rng;
+  std::int64_t last_due = 0;     // for FIFO delivery
+  std::uint64_t handed_seq = 0;  // stamps what the receiver reads in canonical order
 };
 
-// Hot fields first: a busy link is read once per window per direction, and at ten thousand
-// nodes every read starts with cache misses, one per line touched.
+// What a read of the ends' mail touches first, in as few cache lines as it fits: at ten
+// thousand nodes every read of a link starts with a miss per line (bench/RESULTS.md, "Link
+// layer"). What only faults and the report need comes last.
 struct link_state {
   std::array<endpoint, 2> ends;
-  std::array<direction, 2> directions;  // by sending end
-  bool reorder = false;
-  std::int64_t lookahead = 1;
-  // In no order; those due before the tick the link last read mail in are pruned then.
-  std::vector<handed_count> handed;
+  std::uint64_t id = 0;  // the link's participant id
   // Sent before this tick and the link was, or later got, cut: lost. Max while cut; the heal's
   // tick after. A batch can arrive after a cut or heal stamped later than it (an outbox hands
   // over once per lookahead), so a message is judged by when it was sent, not when read.
   std::int64_t cut_until = std::numeric_limits<std::int64_t>::min();
+  std::uint16_t last_kind = 0;  // the kind looked up last (most traffic is of one kind at a time)
+  bool reorder = false;
+  std::array<direction, 2> directions;                // by sending end
+  std::shared_ptr<const protocol::link_model> model;  // shared by every link of the network
+  // In no order; those due before the tick the link last read mail in are pruned then.
+  std::vector<handed_count> handed;
+  // A link carries a handful of kinds: a short vector in order of first use.
+  std::vector<kind_counts> kinds;
   // Loss bursts by start tick; a message sent at s takes the last one started by s.
   std::vector<loss_burst> bursts;
-  // A link carries a handful of kinds: a short vector in order of first use, and the last one
-  // looked up first (most traffic is of one kind at a time).
-  std::vector<kind_counts> kinds;
-  std::uint16_t last_kind = 0;
+  std::int64_t lookahead = 1;
+  // Sent while the receiving end was down, by sending end.
+  std::array<std::vector<waiting>, 2> for_down_end;
   participant_info info;
 
   // Table 2's loss probability, or a burst's for a message sent at `sent_tick`.
@@ -135,7 +138,7 @@ void recount_handed(link_state& st, std::size_t to, std::int64_t from_due, bool 
 // Messages for end `to`, which is down, due at or before `tick`: the node was down when they
 // were due.
 void drop_overdue(link_state& st, std::size_t to, std::int64_t tick) {
-  std::erase_if(st.directions[1 - to].for_down_end, [&](const waiting& w) {
+  std::erase_if(st.for_down_end[1 - to], [&](const waiting& w) {
     if (w.due > tick) return false;
     ++st.counter(w.message.kind).dropped;
     return true;
@@ -170,7 +173,7 @@ void hand_over(link_actor* self, std::size_t to, mail_stamp stamp, bool announce
   auto& st = self->state;
   if (out.empty() && !announced) return;
   auto& dir = st.directions[1 - to];
-  stamp.sender = st.info.id;
+  stamp.sender = st.id;
   stamp.seq = dir.handed_seq;
   dir.handed_seq += out.size();
   send_unattributed(self, st.ends[to].handle, net_deliver_atom_v, stamp, announced,
@@ -190,7 +193,7 @@ verdict judge(link_state& st, std::size_t from, std::int64_t sent_tick, std::uin
   auto& dir = st.directions[from];
   auto& c = st.kinds[kind].counts;
   ++c.sent;
-  auto fate = dir.model->draw(st.loss_at(sent_tick, dir.model->loss()));
+  auto fate = st.model->draw(dir.rng, st.loss_at(sent_tick, st.model->loss()));
   verdict v;
   // A message read after a cut that came later than it was on the wire when the link was cut:
   // everything it could be due at is after the cut (due >= sent + lookahead > cut tick).
@@ -221,7 +224,6 @@ void carry(link_actor* self, int from_node, const mail_stamp& flushed, bool anno
   auto& st = self->state;
   auto from = end_of(st, from_node);
   auto to = 1 - from;
-  auto& dir = st.directions[from];
   bool up = st.ends[to].up;
   // Nothing due before this turn can be taken back by what comes later.
   std::erase_if(st.handed, [&](const handed_count& h) { return h.due < flushed.tick; });
@@ -234,7 +236,7 @@ void carry(link_actor* self, int from_node, const mail_stamp& flushed, bool anno
   auto place = [&](std::int64_t due, std::uint16_t kind, protocol::net_message&& m,
                    net_handover* elsewhere) {
     if (!up) {
-      dir.for_down_end.push_back(waiting{due, std::move(m)});
+      st.for_down_end[from].push_back(waiting{due, std::move(m)});
     } else if (elsewhere) {
       deliver(st, to, due, kind, std::move(m), *elsewhere);
     } else {
@@ -276,11 +278,11 @@ void apply(link_actor* self, const mail_stamp& stamp, const link_command& cmd) {
       // Back before these were due: the fresh node gets them, in the order they were sent.
       drop_overdue(st, end, tick - 1);
       net_handover out;
-      for (auto& w : st.directions[1 - end].for_down_end) {
+      for (auto& w : st.for_down_end[1 - end]) {
         auto kind = st.kind_index(w.message.kind);
         deliver(st, end, w.due, kind, std::move(w.message), out);
       }
-      st.directions[1 - end].for_down_end.clear();
+      st.for_down_end[1 - end].clear();
       hand_over(self, end, stamp, /*announced=*/false, out);
       break;
     }
@@ -296,11 +298,11 @@ void apply(link_actor* self, const mail_stamp& stamp, const link_command& cmd) {
       // The cut catches everything on the wire: due from now on, handed over or held.
       st.cut_until = std::numeric_limits<std::int64_t>::max();
       for (const auto& e : st.ends)
-        if (e.up) self->send(e.handle, net_retract_atom_v, st.info.id, tick);
+        if (e.up) self->send(e.handle, net_retract_atom_v, st.id, tick);
       recount_handed(st, 2, tick, /*as_lost=*/true);
-      for (auto& dir : st.directions) {
-        for (auto& w : dir.for_down_end) ++st.counter(w.message.kind).lost;
-        dir.for_down_end.clear();
+      for (auto& waiting : st.for_down_end) {
+        for (auto& w : waiting) ++st.counter(w.message.kind).lost;
+        waiting.clear();
       }
       break;
     case link_op::heal:
@@ -322,17 +324,20 @@ void forget_bursts(link_state& st, std::int64_t tick) {
   st.bursts.erase(st.bursts.begin(), superseded);
 }
 
-caf::behavior link(link_actor* self, participant_info info, config::network_settings network,
-                   double tick_seconds, std::uint64_t seed, int a, int b) {
+caf::behavior link(link_actor* self, participant_info info,
+                   std::shared_ptr<const protocol::link_model> model, bool reorder,
+                   std::int64_t lookahead, std::uint64_t seed, int a, int b) {
   auto& st = self->state;
   st.info = std::move(info);
+  st.id = st.info.id;
+  st.model = std::move(model);
   st.ends[0].node = a;
   st.ends[1].node = b;
-  st.reorder = network.reorder;
-  st.lookahead = protocol::link_model::min_delay_ticks(network, tick_seconds);
-  auto link_seed = config::derive_seed(seed, st.info.id);
+  st.reorder = reorder;
+  st.lookahead = lookahead;
+  auto link_seed = config::derive_seed(seed, st.id);
   for (std::uint64_t d = 0; d < 2; ++d)
-    st.directions[d].model.emplace(network, tick_seconds, config::derive_seed(link_seed, d));
+    st.directions[d].rng.seed(config::derive_seed(link_seed, d));
   return {
       [self](net_send_atom, int from, const mail_stamp& flushed, bool announced,
              net_send_window& window) { carry(self, from, flushed, announced, window); },
@@ -345,8 +350,8 @@ caf::behavior link(link_actor* self, participant_info info, config::network_sett
         auto& st = self->state;
         auto counts = st.accounting();
         // Held for an end that is down: dropped if it was due within the run, else in flight.
-        for (const auto& dir : st.directions)
-          for (const auto& w : dir.for_down_end)
+        for (const auto& waiting : st.for_down_end)
+          for (const auto& w : waiting)
             ++(w.due < end_tick ? counts[w.message.kind.name()].dropped
                                 : counts[w.message.kind.name()].in_flight);
         // Handed over but due after the run: the node never read them.
@@ -373,10 +378,22 @@ participant_info link_participant(std::size_t index, int a, int b) {
   return info;
 }
 
+std::shared_ptr<const protocol::link_model> make_link_model(const config::scenario& scenario) {
+  return std::make_shared<const protocol::link_model>(scenario.network, scenario.run.tick.count());
+}
+
+caf::actor spawn_link(caf::actor_system& system, const config::scenario& scenario,
+                      std::shared_ptr<const protocol::link_model> model, std::size_t index, int a,
+                      int b) {
+  auto lookahead =
+      protocol::link_model::min_delay_ticks(scenario.network, scenario.run.tick.count());
+  return system.spawn(link, link_participant(index, a, b), std::move(model),
+                      scenario.network.reorder, lookahead, scenario.run.seed, a, b);
+}
+
 caf::actor spawn_link(caf::actor_system& system, const config::scenario& scenario,
                       std::size_t index, int a, int b) {
-  return system.spawn(link, link_participant(index, a, b), scenario.network,
-                      scenario.run.tick.count(), scenario.run.seed, a, b);
+  return spawn_link(system, scenario, make_link_model(scenario), index, a, b);
 }
 
 }  // namespace argus::actors

@@ -1,11 +1,13 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 
 #include "actors/participant_info.hpp"
 #include "caf/fwd.hpp"
 #include "config/scenario.hpp"
+#include "protocol/link_model.hpp"
 
 namespace argus::actors {
 
@@ -35,6 +37,18 @@ participant_info link_participant(std::size_t index, int a, int b);
 ///   std::int64_t from_due)` to each end for what it caught), heal, loss burst. The answer
 ///   comes once its effects are sent: the fault injector waits for it.
 /// - `(report_atom, std::int64_t end_tick)` -> `link_report`.
+///
+/// Its messages' fates are drawn from `model`, which every link of a network shares (one copy
+/// of the parameters stays in cache while tens of thousands of links read it), each direction
+/// from a random stream of its own seeded from the run seed and the link's id.
+caf::actor spawn_link(caf::actor_system& system, const config::scenario& scenario,
+                      std::shared_ptr<const protocol::link_model> model, std::size_t index, int a,
+                      int b);
+
+/// The scenario's link model, to share among the links `spawn_link` makes.
+std::shared_ptr<const protocol::link_model> make_link_model(const config::scenario& scenario);
+
+/// Spawns a link with a model of its own (tests, a single link).
 caf::actor spawn_link(caf::actor_system& system, const config::scenario& scenario,
                       std::size_t index, int a, int b);
 

@@ -14,10 +14,11 @@ network_directory spawn_network(caf::actor_system& system, const config::scenari
                                 const protocol::topology& topo, const caf::actor& clock) {
   network_directory net;
   std::vector<std::pair<caf::actor, participant_info>> links;
+  auto model = make_link_model(scenario);
   for (std::size_t i = 0; i < topo.links().size(); ++i) {
     auto [a, b] = topo.links()[i];
     auto info = link_participant(i, a, b);
-    auto handle = spawn_link(system, scenario, i, a, b);
+    auto handle = spawn_link(system, scenario, model, i, a, b);
     net.links[a][b] = attached_link{info.id, handle};
     net.links[b][a] = attached_link{info.id, handle};
     links.emplace_back(handle, info);

@@ -152,10 +152,11 @@ outcome run_links(const config::scenario& s, const protocol::topology& topo, uns
     info.flushes_at_end = true;
     caf::anon_send(clock, join_atom_v, nodes[n], info);
   }
+  auto model = make_link_model(s);
   for (std::size_t i = 0; i < topo.links().size(); ++i) {
     auto [a, b] = topo.links()[i];
     auto info = link_participant(i, a, b);
-    auto link = spawn_link(sys, s, i, a, b);
+    auto link = spawn_link(sys, s, model, i, a, b);
     per_node[a]->links.push_back({link, info.id, participant_ids::camera(b)});
     per_node[b]->links.push_back({link, info.id, participant_ids::camera(a)});
     for (int end : {a, b}) {

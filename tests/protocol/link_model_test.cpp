@@ -11,12 +11,13 @@ constexpr double tick = 1.0 / 15.0;
 
 TEST(link_model, delays_stay_within_table_2_bounds_on_tick_boundaries) {
   config::network_settings net;  // 200-500 ms
-  link_model model(net, tick, 7);
+  link_model model(net, tick);
+  pcg64 rng(7);
   std::int64_t lo = 1000, hi = 0;
   double sum = 0.0;
   const int n = 20000;
   for (int i = 0; i < n; ++i) {
-    auto f = model.draw();
+    auto f = model.draw(rng);
     lo = std::min(lo, f.delay_ticks);
     hi = std::max(hi, f.delay_ticks);
     sum += static_cast<double>(f.delay_ticks);
@@ -29,26 +30,28 @@ TEST(link_model, delays_stay_within_table_2_bounds_on_tick_boundaries) {
 
 TEST(link_model, loss_rate_matches_the_probability) {
   config::network_settings net;  // loss 0.1
-  link_model model(net, tick, 11);
+  link_model model(net, tick);
+  pcg64 rng(11);
   const int n = 50000;
   int lost = 0;
-  for (int i = 0; i < n; ++i) lost += model.draw().lost ? 1 : 0;
+  for (int i = 0; i < n; ++i) lost += model.draw(rng).lost ? 1 : 0;
   double rate = static_cast<double>(lost) / n;
   // 5 standard deviations of a binomial(50000, 0.1) rate: 0.0067.
   EXPECT_NEAR(rate, 0.1, 5 * std::sqrt(0.1 * 0.9 / n));
   int burst_lost = 0;
-  for (int i = 0; i < 1000; ++i) burst_lost += model.draw(1.0).lost ? 1 : 0;
+  for (int i = 0; i < 1000; ++i) burst_lost += model.draw(rng, 1.0).lost ? 1 : 0;
   EXPECT_EQ(burst_lost, 1000);
 }
 
 TEST(link_model, duplicates_with_the_scenario_probability_and_repeats_per_seed) {
   config::network_settings net;
   net.duplicate_probability = 0.25;
-  link_model a(net, tick, 3), b(net, tick, 3), c(net, tick, 4);
+  link_model model(net, tick);
+  pcg64 a(3), b(3), c(4);
   int dup = 0, same_as_b = 0, same_as_c = 0;
   const int n = 20000;
   for (int i = 0; i < n; ++i) {
-    auto fa = a.draw(), fb = b.draw(), fc = c.draw();
+    auto fa = model.draw(a), fb = model.draw(b), fc = model.draw(c);
     dup += fa.duplicated ? 1 : 0;
     same_as_b += (fa.lost == fb.lost && fa.delay_ticks == fb.delay_ticks) ? 1 : 0;
     same_as_c += (fa.lost == fc.lost && fa.delay_ticks == fc.delay_ticks) ? 1 : 0;
