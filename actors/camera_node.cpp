@@ -35,7 +35,6 @@ struct camera_node_state {
   // What this node sends on a link is never due before the links' lookahead: it goes to the
   // link once per lookahead window (docs/network.md, "Outbox").
   link_outbox outbox{1};
-  std::uint64_t mail_seq = 0;
   // The last turn taken: what a flush outside a turn (crash, end of run) is stamped with.
   mail_stamp last_turn{-1, static_cast<std::uint8_t>(phase::cameras), 0, 0};
 };
@@ -65,10 +64,8 @@ void flush_network(node_actor* self, tick_context& ctx) {
   for (auto& [neighbour, batch] : by_link) {
     auto it = st.links.find(neighbour);
     if (it == st.links.end()) continue;
-    mail_stamp stamp{ctx.tick(), static_cast<std::uint8_t>(phase::cameras), st.info.id,
-                     st.mail_seq++};
     st.outbox.add(it->second.participant, it->second.handle, participant_ids::camera(neighbour),
-                  stamp, std::move(batch));
+                  ctx.tick(), std::move(batch));
   }
   if (st.outbox.window_ends(ctx.tick())) hand_to_links(self, &ctx);
   for (const auto& change : st.network->take_changes())

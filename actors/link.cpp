@@ -248,10 +248,10 @@ void carry(link_actor* self, int from_node, const mail_stamp& flushed, bool anno
     }
   };
   std::uint32_t i = 0;
-  for (const auto& turn : window.turns) {
-    for (; i < turn.end; ++i) {
+  for (const auto& sent : window.ticks) {
+    for (; i < sent.end; ++i) {
       auto kind = st.kind_index(in[i].kind);
-      auto v = judge(st, from, turn.stamp.tick, kind);
+      auto v = judge(st, from, sent.tick, kind);
       if (v.lost) continue;
       if (v.again) place(*v.again, kind, protocol::net_message(in[i]), &again);
       place(v.due, kind, std::move(in[i]), nullptr);

@@ -22,7 +22,7 @@ participant_info link_participant(std::size_t index, int a, int b);
 /// that depends on which end's mail is read first):
 /// - `(net_send_atom, int from_node, mail_stamp flushed, bool announced, net_send_window)` from
 ///   an endpoint's outbox (actors/link_outbox.hpp), what it sent on this link in each turn of
-///   a window, each turn's share with that turn's stamp. Each
+///   a window, each tick's share with that tick. Each
 ///   message is lost (probability `loss_probability`, a loss burst's if sent during one,
 ///   always if sent while the link was cut or on the wire when it was cut, judged by send
 ///   tick), or delivered after a delay drawn uniformly in [min_delay, max_delay] and rounded

@@ -13,7 +13,7 @@ namespace argus::actors {
 
 /// A node's outgoing side of its links. What the node sends on a link in one turn is queued
 /// here and handed to the link once per lookahead window, as one CAF message holding every
-/// turn's messages with their turn's stamp (docs/network.md, "Outbox").
+/// turn's messages with the tick it was sent at (docs/network.md, "Outbox").
 ///
 /// Windows are aligned to the tick grid: a window ends at each tick t with (t + 1) % L == 0.
 /// Nothing sent in a window is due before the tick after it ends (L is the minimum delay), so
@@ -25,19 +25,18 @@ class link_outbox {
   /// Whether a window ends with `tick`: what is queued must go to the links in this turn.
   bool window_ends(std::int64_t tick) const noexcept { return (tick + 1) % lookahead_ == 0; }
 
-  /// Queues `message`, sent in the turn `stamp`, for the link `link` (participant id
-  /// `link_id`) to the node whose participant id is `peer_id`. Everything queued for one link
-  /// in one turn carries the same stamp.
-  void add(std::uint64_t link_id, const caf::actor& link, std::uint64_t peer_id,
-           const mail_stamp& stamp, protocol::net_message message) {
-    queue_for(link_id, link, peer_id).window.add(stamp, std::move(message));
+  /// Queues `message`, sent at tick `sent`, for the link `link` (participant id `link_id`) to
+  /// the node whose participant id is `peer_id`.
+  void add(std::uint64_t link_id, const caf::actor& link, std::uint64_t peer_id, std::int64_t sent,
+           protocol::net_message message) {
+    queue_for(link_id, link, peer_id).window.add(sent, std::move(message));
   }
 
-  /// Queues `messages`, all sent in the turn `stamp`, for the link `link`.
-  void add(std::uint64_t link_id, const caf::actor& link, std::uint64_t peer_id,
-           const mail_stamp& stamp, std::vector<protocol::net_message> messages) {
+  /// Queues `messages`, all sent at tick `sent`, for the link `link`.
+  void add(std::uint64_t link_id, const caf::actor& link, std::uint64_t peer_id, std::int64_t sent,
+           std::vector<protocol::net_message> messages) {
     auto& q = queue_for(link_id, link, peer_id);
-    for (auto& m : messages) q.window.add(stamp, std::move(m));
+    for (auto& m : messages) q.window.add(sent, std::move(m));
   }
 
   /// Hands each link what is queued for it, as `(net_send_atom, int from, mail_stamp flushed,
@@ -86,7 +85,7 @@ class link_outbox {
     // The window's storage goes to the link with it: size it once, not once per doubling.
     if (q.window.messages.capacity() == 0) {
       q.window.messages.reserve(std::max<std::uint32_t>(q.last_size, 1));
-      q.window.turns.reserve(static_cast<std::size_t>(lookahead_));
+      q.window.ticks.reserve(static_cast<std::size_t>(lookahead_));
     }
     return q;
   }

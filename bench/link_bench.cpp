@@ -44,7 +44,6 @@ struct node_links {
 
 struct blaster_state {
   std::uint32_t seq = 0;
-  std::uint64_t mail_seq = 0;
   link_outbox outbox{1};
   net_arrivals arrivals;
   std::uint64_t read = 0;
@@ -64,17 +63,16 @@ void blast(blaster_actor* self, int node, int burst, const node_links& mine,
   st.arrivals.for_each_due(t.tick, t.phase, [&](const mail_stamp&, int, protocol::net_message& m) {
     st.read += m.id != 0 && !m.kind.empty();
   });
-  mail_stamp now{t.tick, t.phase, participant_ids::camera(node), 0};
   for (const auto& l : mine.links) {
-    now.seq = st.mail_seq++;
     for (int i = 0; i < burst; ++i) {
       protocol::net_message m;
       m.id = protocol::make_message_id(node, st.seq++);
       m.origin = node;
       m.kind = bench_kind;
-      st.outbox.add(l.id, l.handle, l.peer, now, std::move(m));
+      st.outbox.add(l.id, l.handle, l.peer, t.tick, std::move(m));
     }
   }
+  mail_stamp now{t.tick, t.phase, participant_ids::camera(node), 0};
   if (st.outbox.window_ends(t.tick))
     st.outbox.flush(self, node, now, true, [&](std::uint64_t peer) { ctx.relayed_to(peer); });
   self->send(t.clock, std::move(ctx).finish());

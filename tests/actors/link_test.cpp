@@ -70,7 +70,7 @@ caf::behavior endpoint(caf::event_based_actor* self, endpoint_plan plan, caf::ac
         m.body = std::to_string(t.tick);
         batch.push_back(std::move(m));
       }
-      outbox->add(link_id, link, participant_ids::camera(plan.peer), now, std::move(batch));
+      outbox->add(link_id, link, participant_ids::camera(plan.peer), t.tick, std::move(batch));
     }
     if (outbox->window_ends(t.tick))
       outbox->flush(self, plan.node, now, true, [&](std::uint64_t peer) { ctx.relayed_to(peer); });
