@@ -4,6 +4,7 @@
 #include <mutex>
 #include <thread>
 
+#include "caf/logger.hpp"
 #include "caf/policy/work_stealing.hpp"
 #include "caf/resumable.hpp"
 
@@ -23,6 +24,8 @@ namespace argus::actors {
 /// Thieves take from the front because CAF's queue takes its back by walking the list from
 /// the front under both locks: harmless when the back is the oldest few jobs, a stall when an
 /// owner appends tens of thousands.
+///
+/// Its workers also leave CAF's logger: see `dequeue`.
 class turn_order_scheduling : public caf::policy::work_stealing {
  public:
   template <class Worker>
@@ -33,8 +36,19 @@ class turn_order_scheduling : public caf::policy::work_stealing {
   /// The next job for `self`: its own queue first, then other workers' queues, polling hard,
   /// then gently, then asleep until a job is enqueued from outside or a relaxed interval passes
   /// (CAF's three strategies, read from the same configuration).
+  ///
+  /// Each worker thread first leaves CAF's logger. Debian's CAF is built with the logger in,
+  /// and for every job it runs, a worker (and the actor) records the actor's id in the
+  /// logger's per-thread table, under a lock that all workers share, even with logging off:
+  /// four atomic writes to one cache line, passed from core to core, per activation. Argus
+  /// keeps CAF's log quiet (`system_config`), so there is nothing to record.
   template <class Worker>
   caf::resumable* dequeue(Worker* self) {
+    static thread_local const bool left_logger = [] {
+      caf::logger::set_current_actor_system(nullptr);
+      return true;
+    }();
+    (void)left_logger;
     auto& data = d(self);
     for (std::size_t k = 0; k < 2; ++k) {
       const auto& s = data.strategies[k];
