@@ -132,9 +132,8 @@ caf::behavior camera_node(node_actor* self, const config::scenario& scenario,
         hand_to_links(self, nullptr);
         return done_atom_v;
       },
-      [self](net_deliver_atom, const mail_stamp& stamp, bool announced, int from,
-             net_handover& handover) {
-        self->state.arrivals.put(stamp, announced, from, handover);
+      [self](net_deliver_mail& mail) {
+        self->state.arrivals.put(mail);
         take_turn_when_ready(self);
       },
       [self](net_retract_atom, std::uint64_t link, std::int64_t from_due) {

@@ -30,13 +30,12 @@ participant_info camera_participant(const config::camera_settings& camera);
 /// Today the node announces itself (`node_up`) on its first tick and runs its network side
 /// (`protocol::node_network`): hello beacons, neighbour discovery (`neighbour_up`,
 /// `neighbour_lost` events), multi-hop forwarding, answers to `ping`, request time-outs
-/// (`peer_failed`). Mail: `(net_deliver_atom, mail_stamp, bool announced, int from_node,
-/// net_handover)` and `(net_retract_atom, ...)` from its links (docs/network.md);
-/// a tick waits for the hand-overs the clock announces with it;
+/// (`peer_failed`). Mail: `(net_deliver_mail)` and `(net_retract_atom, ...)` from its links
+/// (docs/network.md); a tick waits for the hand-overs the clock announces with it;
 /// `(net_originate_atom, mail_stamp, int destination, std::string kind, std::string body, bool
 /// expects_reply)` asks it to send a message (`protocol::broadcast` for all within the hop
 /// limit), read in its turn in canonical order and logged as `net_sent`. What it sends goes
-/// through its outbox (actors/link_outbox.hpp): one `net_send_atom` per link per lookahead
+/// through its outbox (actors/link_outbox.hpp): one `net_send_mail` per link per lookahead
 /// window, and whatever is queued when it crashes (its exit handler) or when the run ends
 /// (`(flush_atom)`, answered with `done_atom`). Sensing (vision/), the controller FSM of
 /// Fig. 10 and the grouping protocol are not in it yet.

@@ -176,8 +176,8 @@ void hand_over(link_actor* self, std::size_t to, mail_stamp stamp, bool announce
   stamp.sender = st.id;
   stamp.seq = dir.handed_seq;
   dir.handed_seq += out.size();
-  send_unattributed(self, st.ends[to].handle, net_deliver_atom_v, stamp, announced,
-                    st.ends[1 - to].node, std::move(out));
+  send_unattributed(self, st.ends[to].handle,
+                    net_deliver_mail{stamp, announced, st.ends[1 - to].node, std::move(out)});
 }
 
 // The fate of one message: lost, or due at `due` and, when duplicated, again at `again`.
@@ -339,8 +339,9 @@ caf::behavior link(link_actor* self, participant_info info,
   for (std::uint64_t d = 0; d < 2; ++d)
     st.directions[d].rng.seed(config::derive_seed(link_seed, d));
   return {
-      [self](net_send_atom, int from, const mail_stamp& flushed, bool announced,
-             net_send_window& window) { carry(self, from, flushed, announced, window); },
+      [self](net_send_mail& mail) {
+        carry(self, mail.from, mail.flushed, mail.announced, mail.window);
+      },
       [self](link_cmd_atom, const mail_stamp& stamp, const link_command& cmd) {
         apply(self, stamp, cmd);
         forget_bursts(self->state, stamp.tick);

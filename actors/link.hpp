@@ -20,7 +20,7 @@ participant_info link_participant(std::size_t index, int a, int b);
 /// Mail it reads, each as it comes (the barrier orders what matters: commands come in the
 /// faults phase, the ends' mail in the cameras phase, and the two directions share nothing
 /// that depends on which end's mail is read first):
-/// - `(net_send_atom, int from_node, mail_stamp flushed, bool announced, net_send_window)` from
+/// - `(net_send_mail)` (from_node, mail_stamp flushed, bool announced, net_send_window) from
 ///   an endpoint's outbox (actors/link_outbox.hpp), what it sent on this link in each turn of
 ///   a window, each tick's share with that tick. Each
 ///   message is lost (probability `loss_probability`, a loss burst's if sent during one,
@@ -28,7 +28,7 @@ participant_info link_participant(std::size_t index, int a, int b);
 ///   tick), or delivered after a delay drawn uniformly in [min_delay, max_delay] and rounded
 ///   to whole ticks; FIFO per direction unless the scenario sets `reorder`; duplicated with
 ///   `duplicate_probability`. What survives goes to the other end at once as one
-///   `(net_deliver_atom, mail_stamp, bool announced, int from_node, net_handover)`
+///   `(net_deliver_mail)` (mail_stamp, bool announced, int from_node, net_handover)
 ///   (hops + 1, each message to be read at its due tick), sent even when empty if `announced`:
 ///   the receiver waits for it. For an end that is down, messages wait for its return until
 ///   they are due, then are dropped.

@@ -39,10 +39,9 @@ class link_outbox {
     for (auto& m : messages) q.window.add(sent, std::move(m));
   }
 
-  /// Hands each link what is queued for it, as `(net_send_atom, int from, mail_stamp flushed,
-  /// bool announced, net_send_window)`. `flushed` is the turn this happens in. When
-  /// `announced`, the link answers with one hand-over to the peer, and `on_relayed(peer_id)` is
-  /// called for each link so that the caller announces it to the clock
+  /// Hands each link what is queued for it, as a `net_send_mail` from end `from`. `flushed` is the
+  /// turn this happens in. When `announced`, the link answers with one hand-over to the peer, and
+  /// `on_relayed(peer_id)` is called for each link so that the caller announces it to the clock
   /// (`tick_context::relayed_to`). A flush outside a turn (a crash, the end of the run) is not
   /// announced.
   template <class Self, class OnRelayed>
@@ -51,8 +50,7 @@ class link_outbox {
     for (auto& q : queues_) {
       if (q.window.empty()) continue;
       q.last_size = static_cast<std::uint32_t>(q.window.messages.size());
-      send_unattributed(self, q.link, net_send_atom_v, from, flushed, announced,
-                        std::move(q.window));
+      send_unattributed(self, q.link, net_send_mail{from, flushed, announced, std::move(q.window)});
       q.window = net_send_window{};
       if (announced) on_relayed(q.peer_id);
     }

@@ -34,7 +34,10 @@ class net_arrivals {
     caf::actor clock;
   };
 
-  /// Stores a hand-over `(net_deliver_atom, stamp, announced, from, handover)`, taking its
+  /// Stores a hand-over, taking its storage (`put(stamp, announced, from, handover)` below).
+  void put(net_deliver_mail& mail) { put(mail.stamp, mail.announced, mail.from, mail.handover); }
+
+  /// Stores a hand-over `handover` from the link at node `from`, taking its
   /// storage: the i-th message is stamped (its due tick, network phase, the link,
   /// stamp.seq + i). An announced one answers what its sender flushed in the turn
   /// (stamp.tick, stamp.phase).

@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "actors/ordered_inbox.hpp"
 #include "protocol/net_message.hpp"
 
 namespace argus::actors {
@@ -36,6 +37,23 @@ struct net_handover {
 template <class Inspector>
 typename Inspector::result_type inspect(Inspector& f, net_handover& x) {
   return f(x.due, x.messages);
+}
+
+/// A hand-over as its node receives it: stamped with the turn of the flush it answers (the
+/// link's id as sender, the first message's sequence number), whether the clock announced it,
+/// and the end it comes from. One value per CAF message, like `net_send_mail`.
+struct net_deliver_mail {
+  mail_stamp stamp;
+  bool announced = false;
+  int from = 0;
+  net_handover handover;
+
+  friend bool operator==(const net_deliver_mail&, const net_deliver_mail&) = default;
+};
+
+template <class Inspector>
+typename Inspector::result_type inspect(Inspector& f, net_deliver_mail& x) {
+  return f(x.stamp, x.announced, x.from, x.handover);
 }
 
 }  // namespace argus::actors

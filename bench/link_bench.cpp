@@ -87,9 +87,8 @@ caf::behavior blaster(blaster_actor* self, int node, int burst, std::int64_t loo
     if (auto t = self->state.arrivals.take_ready()) blast(self, node, burst, *mine, *t);
   };
   return {
-      [=](net_deliver_atom, const mail_stamp& stamp, bool announced, int from,
-          net_handover& handover) {
-        self->state.arrivals.put(stamp, announced, from, handover);
+      [=](net_deliver_mail& mail) {
+        self->state.arrivals.put(mail);
         turn_when_ready();
       },
       [](net_retract_atom, std::uint64_t, std::int64_t) {},

@@ -81,9 +81,8 @@ caf::behavior endpoint(caf::event_based_actor* self, endpoint_plan plan, caf::ac
         outbox->flush(self, plan.node, mail_stamp{}, false, [](std::uint64_t) {});
         return done_atom_v;
       },
-      [=](net_deliver_atom, const mail_stamp& stamp, bool announced, int from,
-          net_handover& handover) {
-        arrivals->put(stamp, announced, from, handover);
+      [=](net_deliver_mail& mail) {
+        arrivals->put(mail);
         if (auto t = arrivals->take_ready()) turn(*t);
       },
       [=](net_retract_atom, std::uint64_t from_link, std::int64_t from_due) {
