@@ -323,25 +323,51 @@ class clock_actor : public caf::event_based_actor {
     // is work the run did.
     result_.unexpected_down = unexpected_down_;
     // Senders hand over what they still hold before the links count what is in flight.
-    for (auto& [id, e] : participants_) {
-      if (!e.info.flushes_at_end) continue;
-      ++flushes_pending_;
-      request(e.handle, caf::infinite, flush_atom_v)
+    for (auto& [id, e] : participants_)
+      if (e.info.flushes_at_end) to_flush_.push_back(e.handle);
+    flushes_pending_ = to_flush_.size();
+    if (flushes_pending_ == 0)
+      request_reports();
+    else
+      ask_for_flushes();
+  }
+
+  // CAF 0.17 keeps an actor's outstanding requests in a flat map that it searches linearly, so
+  // tens of thousands at once cost time quadratic in their number: asking 39,000 links for
+  // their reports all at once took 0.55 s of a 2.7 s run. The end of a run keeps at most this
+  // many in flight.
+  static constexpr std::size_t end_requests_in_flight = 256;
+
+  void ask_for_flushes() {
+    while (next_flush_ < to_flush_.size() &&
+           next_flush_ - (to_flush_.size() - flushes_pending_) < end_requests_in_flight) {
+      request(to_flush_[next_flush_++], caf::infinite, flush_atom_v)
           .then([this](done_atom) { flush_received(); }, [this](caf::error&) { flush_received(); });
     }
-    if (flushes_pending_ == 0) request_reports();
   }
 
   void flush_received() {
-    if (--flushes_pending_ == 0) request_reports();
+    if (--flushes_pending_ == 0)
+      request_reports();
+    else
+      ask_for_flushes();
   }
 
   // Participants that account for something (links) report before the recorder closes.
   void request_reports() {
-    for (auto& [id, e] : participants_) {
-      if (!e.info.reports_at_end) continue;
-      ++reports_pending_;
-      request(e.handle, caf::infinite, report_atom_v, tick_)
+    for (auto& [id, e] : participants_)
+      if (e.info.reports_at_end) to_report_.push_back(e.handle);
+    reports_pending_ = to_report_.size();
+    if (reports_pending_ == 0)
+      close_recorder();
+    else
+      ask_for_reports();
+  }
+
+  void ask_for_reports() {
+    while (next_report_ < to_report_.size() &&
+           next_report_ - (to_report_.size() - reports_pending_) < end_requests_in_flight) {
+      request(to_report_[next_report_++], caf::infinite, report_atom_v, tick_)
           .then(
               [this](link_report& r) {
                 result_.links[r.link] = std::move(r.counts);
@@ -349,11 +375,13 @@ class clock_actor : public caf::event_based_actor {
               },
               [this](caf::error&) { report_received(); });
     }
-    if (reports_pending_ == 0) close_recorder();
   }
 
   void report_received() {
-    if (--reports_pending_ == 0) close_recorder();
+    if (--reports_pending_ == 0)
+      close_recorder();
+    else
+      ask_for_reports();
   }
 
   void close_recorder() {
@@ -393,7 +421,12 @@ class clock_actor : public caf::event_based_actor {
   std::set<std::uint64_t> retired_;
   std::uint64_t joined_ = 0;
   run_result result_;
+  // The end of the run: whom to ask, the next to ask, and how many have not answered.
+  std::vector<caf::actor> to_flush_;
+  std::size_t next_flush_ = 0;
   std::size_t flushes_pending_ = 0;
+  std::vector<caf::actor> to_report_;
+  std::size_t next_report_ = 0;
   std::size_t reports_pending_ = 0;
   std::vector<std::string> unexpected_down_;
   std::array<std::vector<std::uint64_t>, phase_count> every_tick_;  // sorted ids
