@@ -3,6 +3,8 @@
 #include "actors/clock.hpp"
 
 #include <algorithm>
+#include <string>
+#include <vector>
 
 #include "actors/system_config.hpp"
 #include "caf/test/dsl.hpp"
@@ -271,6 +273,55 @@ CAF_TEST(at speed 1 virtual time stays within one tick of wall time) {
     elapsed += step;
   }
   CAF_CHECK_EQUAL(ticks_done, 60);
+}
+
+// The clock asks at most a few hundred participants at a time at the end of a run (CAF 0.17
+// searches outstanding requests linearly); more than that must still each be asked once.
+CAF_TEST(every participant is asked once to flush and once to report however many there are) {
+  constexpr int senders = 700;
+  constexpr int reporters = 900;
+  auto clock = make_clock(1);
+  auto flushed = std::make_shared<std::vector<int>>(senders, 0);
+  auto reported = std::make_shared<std::vector<int>>(reporters, 0);
+  for (int i = 0; i < senders; ++i) {
+    auto sender = sys.spawn([=](caf::event_based_actor* self) -> caf::behavior {
+      return {
+          [=](tick_atom, std::int64_t tick, std::uint8_t, std::uint32_t) {
+            tick_context ctx(static_cast<std::uint64_t>(i + 1), "s", tick, phase::cameras);
+            self->send(caf::actor_cast<caf::actor>(self->current_sender()),
+                       std::move(ctx).finish());
+          },
+          [=](flush_atom) {
+            // Every flush comes before the first report.
+            CAF_CHECK(
+                std::all_of(reported->begin(), reported->end(), [](int n) { return n == 0; }));
+            ++(*flushed)[static_cast<std::size_t>(i)];
+            return done_atom_v;
+          },
+      };
+    });
+    auto in = info(static_cast<std::uint64_t>(i + 1), "s", phase::cameras);
+    in.flushes_at_end = true;
+    self->send(clock, join_atom_v, sender, in);
+  }
+  for (int i = 0; i < reporters; ++i) {
+    auto reporter = sys.spawn([=](caf::event_based_actor*) -> caf::behavior {
+      return {
+          [=](report_atom, std::int64_t) {
+            ++(*reported)[static_cast<std::size_t>(i)];
+            return link_report{"link/" + std::to_string(i), {}};
+          },
+      };
+    });
+    auto in = info(static_cast<std::uint64_t>(10'000 + i), "r", phase::network, wake_mode::never);
+    in.reports_at_end = true;
+    self->send(clock, join_atom_v, reporter, in);
+  }
+  auto result = run_to_end(clock);
+  CAF_CHECK(std::all_of(flushed->begin(), flushed->end(), [](int n) { return n == 1; }));
+  CAF_CHECK(std::all_of(reported->begin(), reported->end(), [](int n) { return n == 1; }));
+  CAF_CHECK_EQUAL(result.links.size(), static_cast<std::size_t>(reporters));
+  CAF_CHECK(rec->done);
 }
 
 CAF_TEST_FIXTURE_SCOPE_END()
