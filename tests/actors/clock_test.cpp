@@ -284,35 +284,41 @@ CAF_TEST(every participant is asked once to flush and once to report however man
   auto flushed = std::make_shared<std::vector<int>>(senders, 0);
   auto reported = std::make_shared<std::vector<int>>(reporters, 0);
   for (int i = 0; i < senders; ++i) {
-    auto sender = sys.spawn([=](caf::event_based_actor* self) -> caf::behavior {
-      return {
-          [=](tick_atom, std::int64_t tick, std::uint8_t, std::uint32_t) {
-            tick_context ctx(static_cast<std::uint64_t>(i + 1), "s", tick, phase::cameras);
-            self->send(caf::actor_cast<caf::actor>(self->current_sender()),
-                       std::move(ctx).finish());
-          },
-          [=](flush_atom) {
-            // Every flush comes before the first report.
-            CAF_CHECK(
-                std::all_of(reported->begin(), reported->end(), [](int n) { return n == 0; }));
-            ++(*flushed)[static_cast<std::size_t>(i)];
-            return done_atom_v;
-          },
-      };
-    });
+    // The index is an argument, not a capture: CAF 0.17's spawn dereferences an empty
+    // argument tuple, which UBSan reports (test_participants.hpp, `silent`).
+    auto sender = sys.spawn(
+        [=](caf::event_based_actor* self, int index) -> caf::behavior {
+          return {
+              [=](tick_atom, std::int64_t tick, std::uint8_t, std::uint32_t) {
+                tick_context ctx(static_cast<std::uint64_t>(index + 1), "s", tick, phase::cameras);
+                self->send(caf::actor_cast<caf::actor>(self->current_sender()),
+                           std::move(ctx).finish());
+              },
+              [=](flush_atom) {
+                // Every flush comes before the first report.
+                CAF_CHECK(
+                    std::all_of(reported->begin(), reported->end(), [](int n) { return n == 0; }));
+                ++(*flushed)[static_cast<std::size_t>(index)];
+                return done_atom_v;
+              },
+          };
+        },
+        i);
     auto in = info(static_cast<std::uint64_t>(i + 1), "s", phase::cameras);
     in.flushes_at_end = true;
     self->send(clock, join_atom_v, sender, in);
   }
   for (int i = 0; i < reporters; ++i) {
-    auto reporter = sys.spawn([=](caf::event_based_actor*) -> caf::behavior {
-      return {
-          [=](report_atom, std::int64_t) {
-            ++(*reported)[static_cast<std::size_t>(i)];
-            return link_report{"link/" + std::to_string(i), {}};
-          },
-      };
-    });
+    auto reporter = sys.spawn(
+        [=](caf::event_based_actor*, int index) -> caf::behavior {
+          return {
+              [=](report_atom, std::int64_t) {
+                ++(*reported)[static_cast<std::size_t>(index)];
+                return link_report{"link/" + std::to_string(index), {}};
+              },
+          };
+        },
+        i);
     auto in = info(static_cast<std::uint64_t>(10'000 + i), "r", phase::network, wake_mode::never);
     in.reports_at_end = true;
     self->send(clock, join_atom_v, reporter, in);
