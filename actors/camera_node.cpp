@@ -1,5 +1,6 @@
 #include "actors/camera_node.hpp"
 
+#include <optional>
 #include <vector>
 
 #include "actors/link_outbox.hpp"
@@ -7,20 +8,34 @@
 #include "actors/participant_ids.hpp"
 #include "actors/tick_context.hpp"
 #include "actors/type_ids.hpp"
+#include "config/ticks.hpp"
+#include "controller/camera_controller.hpp"
 #include "fmt/format.h"
+#include "protocol/group_messages.hpp"
 #include "protocol/link_model.hpp"
 #include "protocol/node_network.hpp"
+#include "sensing/emulated_looks.hpp"
+#include "sensing/operator_view.hpp"
+#include "sensing/pixel_sensor.hpp"
+#include "vision/imaging_model.hpp"
 
 namespace argus::actors {
 namespace {
 
-// A message the node's controller (or, until the controller exists, the operator or a test)
-// asks the network side to originate.
+// A message the operator or a test asks the network side to originate (the controller's own
+// messages go straight to the network).
 struct origination {
   int destination = protocol::broadcast;
   std::string kind;
   std::string body;
   bool expects_reply = false;
+};
+
+// An operator task for this camera (scenario `tasks:`), due at `tick`.
+struct due_task {
+  std::int64_t tick = 0;
+  protocol::task_id task = 0;
+  config::operator_task request;
 };
 
 struct camera_node_state {
@@ -37,6 +52,32 @@ struct camera_node_state {
   link_outbox outbox{1};
   // The last turn taken: what a flush outside a turn (crash, end of run) is stamped with.
   mail_stamp last_turn{-1, static_cast<std::uint8_t>(phase::cameras), 0, 0};
+
+  // The camera: its controller (node knowledge only), its head, its sensor.
+  std::unique_ptr<controller::camera_controller> controller;
+  std::optional<vision::ptz_camera> head;
+  std::shared_ptr<const camera_world> world;
+  vision::camera_placement placement;  // simulator knowledge: where the renderer puts it
+  vision::frame_size frame;
+  config::seconds tick_length{1.0 / 15.0};
+  std::optional<sensing::pixel_sensor> pixels;
+  std::optional<sensing::emulated_looks> emulated;
+  std::optional<vision::imaging_model> imaging;
+  std::vector<controller::look_request> looks;  // asked for by the controller's last step
+  std::vector<due_task> tasks;
+  std::size_t next_task = 0;
+  std::int64_t first_turn = -1;
+
+  // The turn in progress (it may wait for a rendered frame).
+  std::optional<tick_context> ctx;
+  caf::actor clock;
+  controller::controller_input input;
+  std::vector<due_task> queries;
+  bool idle_behaviour = true;
+
+  caf::behavior idle;
+  caf::behavior computing_relevance;
+  caf::behavior performing_task;
 };
 
 using node_actor = caf::stateful_actor<camera_node_state>;
@@ -76,21 +117,113 @@ void flush_network(node_actor* self, tick_context& ctx) {
              fmt::format(R"("camera":{},"peer":{},"request":"{}")", st.camera_id, f.peer, f.kind));
 }
 
+vision::camera_view view_of(const camera_node_state& st) {
+  vision::camera_view view;
+  view.placement = st.placement;
+  view.pose = st.head->state();
+  view.width_px = st.frame.width_px;
+  view.height_px = st.frame.height_px;
+  return view;
+}
+
+// The operator's tasks for this camera: its signature from the camera's own sensing, or a
+// refusal when the pedestrian is not in view.
+void take_queries(camera_node_state& st, const world::snapshot* snap, const cv::Mat& image) {
+  for (const auto& q : st.queries) {
+    std::optional<cv::Rect2d> box;
+    if (snap != nullptr && st.world)
+      box = sensing::operator_box(*snap, *st.world->station, view_of(st), q.request.pedestrian);
+    if (!box || (st.pixels && image.empty())) {
+      st.ctx->emit("task_refused",
+                   fmt::format(R"("camera":{},"task":{},"pedestrian":{},"reason":"{}")",
+                               st.camera_id, q.task, q.request.pedestrian,
+                               !box ? "not_in_view" : "no_frame"));
+      continue;
+    }
+    controller::operator_query query;
+    query.task.task = q.task;
+    query.task.min_cameras = static_cast<std::uint16_t>(q.request.cameras_wanted);
+    query.task.max_cameras = static_cast<std::uint16_t>(q.request.cameras_max());
+    query.box = *box;
+    query.task.target = st.pixels ? st.pixels->acquire(q.task, image, cv::Rect(*box))
+                                  : st.emulated->acquire(q.task, *snap, q.request.pedestrian);
+    st.input.queries.push_back(std::move(query));
+  }
+  st.queries.clear();
+}
+
+caf::behavior& behaviour_for(camera_node_state& st) {
+  switch (st.controller->state()) {
+    case controller::node_state::idle:
+      return st.idle;
+    case controller::node_state::computing_relevance:
+      return st.computing_relevance;
+    case controller::node_state::performing_task:
+      return st.performing_task;
+  }
+  return st.idle;
+}
+
+// The second half of a turn, once the frame (if any) is there: sense, decide, act.
+void finish_turn(node_actor* self, const cv::Mat& image) {
+  auto& st = self->state;
+  auto& ctx = *st.ctx;
+  const auto snap = st.world ? st.world->board->latest() : nullptr;
+  if (snap && !st.looks.empty()) {
+    if (st.pixels && !image.empty()) {
+      st.input.looks = st.pixels->look(image, st.looks);
+    } else if (st.emulated) {
+      st.input.looks = st.emulated->look(*snap, *st.world->station, view_of(st), st.looks);
+    }
+  }
+  take_queries(st, snap.get(), image);
+  st.input.pose = st.head->state();
+  auto out = st.controller->step(st.input);
+  st.input = {};
+  for (auto& m : out.messages) {
+    const auto kind = protocol::kind_of(m.message);
+    st.network->send(m.destination, std::string(kind), protocol::encode(m.message));
+  }
+  for (auto& e : out.events) ctx.emit(std::move(e.kind), std::move(e.fields_json));
+  if (out.command) st.head->command(*out.command);
+  st.head->step(st.tick_length);
+  st.looks = std::move(out.looks);
+  st.network->tick(ctx.tick());
+  flush_network(self, ctx);
+  self->send(st.clock, std::move(*st.ctx).finish());
+  st.ctx.reset();
+  self->become(behaviour_for(st));
+}
+
 void take_turn(node_actor* self, std::int64_t tick, std::uint8_t p, const caf::actor& clock) {
   auto& st = self->state;
   st.last_turn = mail_stamp{tick, p, st.info.id, 0};
-  tick_context ctx(st.info.id, st.info.name, tick, st.info.tick_phase);
+  st.ctx.emplace(st.info.id, st.info.name, tick, st.info.tick_phase);
+  st.clock = clock;
+  auto& ctx = *st.ctx;
   if (!st.up_logged) {
     st.up_logged = true;
+    st.first_turn = tick;
     ctx.emit("node_up",
              fmt::format(R"("camera":{},"type":"{}")", st.camera_id, st.ptz ? "ptz" : "static"));
   }
   st.arrivals.for_each_due(tick, p, [&](const mail_stamp&, int from, protocol::net_message& m) {
     st.network->receive(tick, from, m);
   });
-  for (const auto& m : st.network->take_delivered()) {
-    // A liveness probe any node may send; the controller's messages come with it.
-    if (m.kind == "ping") st.network->reply(m, "pong", {});
+  st.input.tick = tick;
+  for (auto& m : st.network->take_delivered()) {
+    if (auto decoded = protocol::decode(m.kind.name(), m.body)) {
+      st.input.messages.push_back({m.origin, std::move(*decoded)});
+      continue;
+    }
+    // A liveness probe any node may send.
+    if (m.kind == "ping") {
+      st.network->reply(m, "pong", {});
+    } else if (m.kind != "pong") {
+      ctx.emit("bad_message", fmt::format(R"("camera":{},"origin":{},"message":"{}","bytes":{})",
+                                          st.camera_id, m.origin, m.kind, m.body.size()));
+      continue;
+    }
     ctx.emit("net_received", fmt::format(R"("camera":{},"origin":{},"message":"{}","hops":{})",
                                          st.camera_id, m.origin, m.kind, m.hops));
   }
@@ -100,9 +233,34 @@ void take_turn(node_actor* self, std::int64_t tick, std::uint8_t p, const caf::a
     ctx.emit("net_sent", fmt::format(R"("camera":{},"destination":{},"message":"{}","id":{})",
                                      st.camera_id, o.destination, o.kind, id));
   }
-  st.network->tick(tick);
-  flush_network(self, ctx);
-  self->send(clock, std::move(ctx).finish());
+  // Tasks the operator gave while this camera was down are lost with it.
+  for (; st.next_task < st.tasks.size() && st.tasks[st.next_task].tick <= tick; ++st.next_task)
+    if (st.tasks[st.next_task].tick >= st.first_turn) st.queries.push_back(st.tasks[st.next_task]);
+  // Only a node whose state needs an image asks for one: an idle node looks at nothing.
+  const bool sense = st.world && (!st.queries.empty() || (!st.idle_behaviour && !st.looks.empty()));
+  const auto snap = st.world ? st.world->board->latest() : nullptr;
+  if (!sense || !st.pixels || !snap) {
+    finish_turn(self, {});
+    return;
+  }
+  render_request request;
+  request.view = view_of(st);
+  request.frame = snap;
+  request.time_s = snap->time().count();
+  request.field_interval_s = st.tick_length.count() / 2.0;
+  request.imaging = std::move(st.imaging);
+  self->request(st.world->render_pool, caf::infinite, render_atom_v, std::move(request))
+      .then(
+          [self](render_result& result) {
+            self->state.imaging = std::move(result.imaging);
+            finish_turn(self, result.image);
+          },
+          [self](caf::error& err) {
+            auto& st = self->state;
+            st.ctx->emit("render_failed", fmt::format(R"("camera":{},"error_code":{})",
+                                                      st.camera_id, static_cast<int>(err.code())));
+            finish_turn(self, {});
+          });
 }
 
 // A turn waits until every hand-over the clock announced for it has come (docs/network.md).
@@ -110,8 +268,26 @@ void take_turn_when_ready(node_actor* self) {
   if (auto t = self->state.arrivals.take_ready()) take_turn(self, t->tick, t->phase, t->clock);
 }
 
+// Fig. 10's top level: each state is a behaviour; they share the handlers of link mail and the
+// end of the run, and differ in what a tick costs (an idle node senses only for the operator).
+caf::behavior state_behaviour(node_actor* self, controller::node_state state,
+                              const caf::message_handler& shared) {
+  const bool idle = state == controller::node_state::idle;
+  return caf::message_handler{
+      [self, idle](tick_atom, std::int64_t tick, std::uint8_t p, std::uint32_t relayed) {
+        auto& st = self->state;
+        st.idle_behaviour = idle;
+        st.arrivals.hold({tick, p, caf::actor_cast<caf::actor>(self->current_sender())}, relayed);
+        take_turn_when_ready(self);
+      },
+      [state](node_state_atom) { return std::string(controller::name_of(state)); },
+  }
+      .or_else(shared);
+}
+
 caf::behavior camera_node(node_actor* self, const config::scenario& scenario,
-                          config::camera_settings camera, link_directory links) {
+                          config::camera_settings camera, link_directory links,
+                          std::shared_ptr<const camera_world> world) {
   auto& st = self->state;
   st.info = camera_participant(camera);
   st.camera_id = camera.id;
@@ -120,13 +296,36 @@ caf::behavior camera_node(node_actor* self, const config::scenario& scenario,
   st.links = std::move(links);
   st.outbox = link_outbox{
       protocol::link_model::min_delay_ticks(scenario.network, scenario.run.tick.count())};
+  st.controller = std::make_unique<controller::camera_controller>(
+      controller::node_identity::from(camera), scenario);
+  st.head.emplace(vision::ptz_camera::from(camera));
+  st.placement = vision::camera_placement::from(camera);
+  st.frame = controller::node_identity::from(camera).frame;
+  st.tick_length = scenario.run.tick;
+  st.world = std::move(world);
+  if (st.world) {
+    if (scenario.sensing.mode == config::sensing_mode::pixels) {
+      st.pixels.emplace();
+      st.imaging = vision::imaging_model::for_camera(camera.imaging, scenario.run.seed, camera.id);
+    } else {
+      st.emulated.emplace(st.world->sensor_model, scenario.run.seed, camera.id);
+    }
+  }
+  for (std::size_t i = 0; i < scenario.tasks.size(); ++i) {
+    const auto& t = scenario.tasks[i];
+    if (t.camera != camera.id) continue;
+    st.tasks.push_back({config::to_ticks(t.at, scenario.run.tick),
+                        static_cast<protocol::task_id>(i), t});
+  }
+  std::stable_sort(st.tasks.begin(), st.tasks.end(),
+                   [](const auto& a, const auto& b) { return a.tick < b.tick; });
   // What the node sent before it went down was on the wire already: it still reaches the
   // links, and the fault injector waits for this node's end before the links run again.
   self->set_exit_handler([self](caf::exit_msg& msg) {
     hand_to_links(self, nullptr);
     self->quit(msg.reason);
   });
-  return {
+  caf::message_handler shared{
       // The run is over: the links count what is still queued as in flight.
       [self](flush_atom) {
         hand_to_links(self, nullptr);
@@ -144,12 +343,11 @@ caf::behavior camera_node(node_actor* self, const config::scenario& scenario,
         self->state.to_originate.put(
             stamp, origination{destination, std::move(kind), std::move(body), expects_reply});
       },
-      [self](tick_atom, std::int64_t tick, std::uint8_t p, std::uint32_t relayed) {
-        auto& st = self->state;
-        st.arrivals.hold({tick, p, caf::actor_cast<caf::actor>(self->current_sender())}, relayed);
-        take_turn_when_ready(self);
-      },
   };
+  st.idle = state_behaviour(self, controller::node_state::idle, shared);
+  st.computing_relevance = state_behaviour(self, controller::node_state::computing_relevance, shared);
+  st.performing_task = state_behaviour(self, controller::node_state::performing_task, shared);
+  return st.idle;
 }
 
 }  // namespace
@@ -162,8 +360,9 @@ participant_info camera_participant(const config::camera_settings& camera) {
 }
 
 caf::actor spawn_camera_node(caf::actor_system& system, const config::scenario& scenario,
-                             const config::camera_settings& camera, link_directory links) {
-  return system.spawn(camera_node, scenario, camera, std::move(links));
+                             const config::camera_settings& camera, link_directory links,
+                             std::shared_ptr<const camera_world> world) {
+  return system.spawn(camera_node, scenario, camera, std::move(links), std::move(world));
 }
 
 }  // namespace argus::actors

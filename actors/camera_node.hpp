@@ -4,9 +4,12 @@
 #include <map>
 
 #include "actors/participant_info.hpp"
+#include "actors/snapshot_board.hpp"
 #include "caf/actor.hpp"
 #include "caf/fwd.hpp"
 #include "config/scenario.hpp"
+#include "vision/sensor_model.hpp"
+#include "world/station.hpp"
 
 namespace argus::actors {
 
@@ -20,6 +23,17 @@ struct attached_link {
 /// A camera node's links, by the neighbour's camera id.
 using link_directory = std::map<int, attached_link>;
 
+/// What the simulator lends every camera node of a run to sense with: the station and the
+/// latest snapshot (for rendering and for the emulated sensor; never handed to the controller),
+/// the render pool (pixel sensing) and the emulated sensor's error model.
+struct camera_world {
+  std::shared_ptr<const world::station> station;
+  std::shared_ptr<snapshot_board> board;
+  /// The render pool's front; null unless sensing is by pixels.
+  caf::actor render_pool;
+  vision::sensor_model sensor_model;
+};
+
 /// How camera `camera` takes part in the clock: phase cameras, every tick (it senses each frame).
 participant_info camera_participant(const config::camera_settings& camera);
 
@@ -27,19 +41,32 @@ participant_info camera_participant(const config::camera_settings& camera);
 /// `camera_participant(camera)`, before the clock starts or from inside a tick, so that joins
 /// stay deterministic.
 ///
-/// Today the node announces itself (`node_up`) on its first tick and runs its network side
-/// (`protocol::node_network`): hello beacons, neighbour discovery (`neighbour_up`,
-/// `neighbour_lost` events), multi-hop forwarding, answers to `ping`, request time-outs
-/// (`peer_failed`). Mail: `(net_deliver_mail)` and `(net_retract_atom, ...)` from its links
+/// The node hosts the camera controller (controller::camera_controller: Fig. 10 and the
+/// grouping protocol), its PTZ head (vision::ptz_camera) and its sensor, and runs the network
+/// side (`protocol::node_network`: hello beacons, neighbour discovery, multi-hop forwarding,
+/// `ping`, request time-outs). Fig. 10's top level is the actor's behaviour: `idle`,
+/// `computing_relevance` and `performing_task`, switched with `become` after each turn; they
+/// share the link-mail handlers. An idle node renders nothing; the others ask the render pool
+/// for their frame (pixel sensing) or the emulated sensor, at the head's pose, then run the
+/// controller on it. `(node_state_atom)` answers the behaviour's name.
+///
+/// Each turn: the messages its links delivered (decoded; bytes that are not a protocol message
+/// are logged `bad_message` and dropped), the operator's tasks for this camera due now (from
+/// the scenario: the node takes the pedestrian's signature from its own pixels, or logs
+/// `task_refused` when the pedestrian is not in its view), what it sensed; then the controller's
+/// messages go out through the node network, its events into the log, and the head slews one
+/// tick toward the commanded pose. With `world` null the node has no sensor (network tests).
+///
+/// Mail: `(net_deliver_mail)` and `(net_retract_atom, ...)` from its links
 /// (docs/network.md); a tick waits for the hand-overs the clock announces with it;
 /// `(net_originate_atom, mail_stamp, int destination, std::string kind, std::string body, bool
 /// expects_reply)` asks it to send a message (`protocol::broadcast` for all within the hop
 /// limit), read in its turn in canonical order and logged as `net_sent`. What it sends goes
 /// through its outbox (actors/link_outbox.hpp): one `net_send_mail` per link per lookahead
 /// window, and whatever is queued when it crashes (its exit handler) or when the run ends
-/// (`(flush_atom)`, answered with `done_atom`). Sensing (vision/), the controller FSM of
-/// Fig. 10 and the grouping protocol are not in it yet.
+/// (`(flush_atom)`, answered with `done_atom`).
 caf::actor spawn_camera_node(caf::actor_system& system, const config::scenario& scenario,
-                             const config::camera_settings& camera, link_directory links);
+                             const config::camera_settings& camera, link_directory links,
+                             std::shared_ptr<const camera_world> world = nullptr);
 
 }  // namespace argus::actors

@@ -118,7 +118,7 @@ bool recover(injector* self, int camera) {
   if (slot) return false;  // it did not go down, or is already back
   for (const auto& cam : st.scenario.cameras) {
     if (cam.id != camera) continue;
-    slot = spawn_camera_node(self->system(), st.scenario, cam, st.net.links[camera]);
+    slot = spawn_camera_node(self->system(), st.scenario, cam, st.net.links[camera], st.net.world);
     self->send(st.clock, join_atom_v, slot, camera_participant(cam));
     link_command cmd;
     cmd.op = link_op::attach;

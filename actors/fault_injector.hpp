@@ -15,6 +15,8 @@ struct network_directory {
   std::map<int, caf::actor> cameras;
   /// Each camera's links, by neighbour id.
   std::map<int, link_directory> links;
+  /// What a camera senses with (a recovered camera gets the same); null for none.
+  std::shared_ptr<const camera_world> world;
 };
 
 /// The exit reason of a crash the injector causes. Not `exit_reason::kill`, which an actor

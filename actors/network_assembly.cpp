@@ -11,8 +11,10 @@
 namespace argus::actors {
 
 network_directory spawn_network(caf::actor_system& system, const config::scenario& scenario,
-                                const protocol::topology& topo, const caf::actor& clock) {
+                                const protocol::topology& topo, const caf::actor& clock,
+                                std::shared_ptr<const camera_world> world) {
   network_directory net;
+  net.world = std::move(world);
   std::vector<std::pair<caf::actor, participant_info>> links;
   auto model = make_link_model(scenario);
   for (std::size_t i = 0; i < topo.links().size(); ++i) {
@@ -24,7 +26,7 @@ network_directory spawn_network(caf::actor_system& system, const config::scenari
     links.emplace_back(handle, info);
   }
   for (const auto& cam : scenario.cameras) {
-    auto node = spawn_camera_node(system, scenario, cam, net.links[cam.id]);
+    auto node = spawn_camera_node(system, scenario, cam, net.links[cam.id], net.world);
     net.cameras.emplace(cam.id, node);
     caf::anon_send(clock, join_atom_v, node, camera_participant(cam));
   }

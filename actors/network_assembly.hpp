@@ -11,7 +11,9 @@ namespace argus::actors {
 /// `protocol::topology`), one camera node per camera — attaches every node to its links and
 /// joins them all to `clock`. Everything goes out from the calling thread in this order, so it
 /// reaches its receivers before the clock's first tick. Returns what the fault injector acts on.
+/// `world` is what the cameras sense with (null: cameras without a sensor).
 network_directory spawn_network(caf::actor_system& system, const config::scenario& scenario,
-                                const protocol::topology& topo, const caf::actor& clock);
+                                const protocol::topology& topo, const caf::actor& clock,
+                                std::shared_ptr<const camera_world> world = nullptr);
 
 }  // namespace argus::actors

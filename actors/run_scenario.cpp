@@ -27,6 +27,12 @@ std::filesystem::path output_dir_of(const config::scenario& scenario) {
   return std::filesystem::path("out") / (scenario.name.empty() ? "run" : scenario.name);
 }
 
+std::filesystem::path sensor_model_path(const config::scenario& scenario) {
+  const std::filesystem::path file(scenario.sensing.sensor_model);
+  if (file.is_absolute() || scenario.source_path.empty()) return file;
+  return std::filesystem::path(scenario.source_path).parent_path() / file;
+}
+
 run_outcome run_scenario(const config::scenario& scenario, bool show_progress) {
   run_options options;
   options.show_progress = show_progress;
@@ -52,9 +58,18 @@ run_outcome run_scenario(const config::scenario& scenario, const run_options& op
   world_run_settings world_settings;
   world_settings.station = world::station::load(world::layout_path(scenario));
   render_pool pool;
-  if (options.video) {
+  const bool pixels = scenario.sensing.mode == config::sensing_mode::pixels;
+  if (options.video || pixels)
     pool = spawn_render_pool(system, world_settings.station,
                              options.render_threads != 0 ? options.render_threads : threads);
+  auto cameras_world = std::make_shared<camera_world>();
+  cameras_world->station = world_settings.station;
+  cameras_world->board = std::make_shared<snapshot_board>();
+  if (pixels) cameras_world->render_pool = pool.front;
+  if (!scenario.sensing.sensor_model.empty())
+    cameras_world->sensor_model = vision::load_sensor_model(sensor_model_path(scenario).string());
+  world_settings.board = cameras_world->board;
+  if (options.video) {
     video_settings vs;
     vs.file = outcome.output_dir / "video" / "feeds.avi";
     vs.cameras = scenario.cameras;
@@ -98,7 +113,7 @@ run_outcome run_scenario(const config::scenario& scenario, const run_options& op
 
   // Joins and link attachments go out from this thread, in this order, before `start`:
   // enqueued in program order, they all reach their receivers before the first tick.
-  auto net = spawn_network(system, scenario, topo, clock);
+  auto net = spawn_network(system, scenario, topo, clock, std::move(cameras_world));
   auto script = spawn_scenario_script(system, scenario, clock);
   caf::anon_send(clock, join_atom_v, script, script_participant());
   auto faults = spawn_fault_injector(system, scenario, clock, std::move(net));

@@ -42,4 +42,8 @@ run_outcome run_scenario(const config::scenario& scenario, bool show_progress);
 /// The output directory a scenario's run writes to: `run.output_dir`, or `out/<name>`.
 std::filesystem::path output_dir_of(const config::scenario& scenario);
 
+/// Where the scenario's emulated-sensor model file is (relative paths are taken from the
+/// scenario file's folder).
+std::filesystem::path sensor_model_path(const config::scenario& scenario);
+
 }  // namespace argus::actors

@@ -61,5 +61,6 @@ CAF_ADD_ATOM(argus, argus::actors, world_attach_atom, "w_attach")
 CAF_ADD_ATOM(argus, argus::actors, render_atom, "render")
 CAF_ADD_ATOM(argus, argus::actors, world_snapshot_atom, "w_snap")
 CAF_ADD_ATOM(argus, argus::actors, flush_atom, "flush")
+CAF_ADD_ATOM(argus, argus::actors, node_state_atom, "node_st")
 
 CAF_END_TYPE_ID_BLOCK(argus)

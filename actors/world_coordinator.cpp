@@ -34,6 +34,7 @@ struct coordinator_setup {
   std::shared_ptr<trajectory_file> trajectories;
   std::vector<caf::actor> partitions;
   std::vector<std::pair<caf::actor, std::uint64_t>> snapshot_observers;
+  std::shared_ptr<snapshot_board> board;
 };
 
 struct world_coordinator_state {
@@ -119,6 +120,7 @@ void step_world(caf::stateful_actor<world_coordinator_state>* self, tick_context
                    std::chrono::duration<double>{static_cast<double>(world_tick) * setup.tick_s},
                    results, spawned, std::move(spawn_events));
   write_trajectories(setup.trajectories, *st.current, setup.end_tick);
+  if (setup.board) setup.board->publish(st.current);
   emit_events(ctx, *st.current);
   // Redistribute in world::crowd::step's order: own, handed over, newcomers.
   std::vector<std::vector<world::pedestrian>> owned(count);
@@ -196,6 +198,7 @@ world_actors spawn_world(caf::actor_system& system, world_run_settings settings)
 
   auto trajectories = open_trajectories(settings.trajectories);
   write_trajectories(trajectories, *snapshot0, settings.end_tick);
+  if (settings.board) settings.board->publish(snapshot0);
 
   world_actors out;
   std::vector<caf::actor> partitions;
@@ -213,7 +216,7 @@ world_actors spawn_world(caf::actor_system& system, world_run_settings settings)
       world_coordinator,
       coordinator_setup{settings.station, bounds, std::move(spawner), cs.behaviour.tick_s,
                         snapshot0, settings.end_tick, std::move(trajectories), partitions,
-                        std::move(settings.snapshot_observers)});
+                        std::move(settings.snapshot_observers), settings.board});
   for (std::size_t i = 0; i < partitions.size(); ++i) {
     caf::anon_send(partitions[i], world_attach_atom_v, coordinator);
     out.participants.emplace_back(partitions[i], crowd_partition_participant(i));

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "actors/participant_info.hpp"
+#include "actors/snapshot_board.hpp"
 #include "caf/actor.hpp"
 #include "caf/fwd.hpp"
 #include "world/crowd.hpp"
@@ -32,6 +33,8 @@ struct world_run_settings {
   /// phase network, so an observer of phase cameras reads it in the same tick (the video
   /// recorder).
   std::vector<std::pair<caf::actor, std::uint64_t>> snapshot_observers;
+  /// Where camera nodes read the latest snapshot (snapshot_board.hpp); null for none.
+  std::shared_ptr<snapshot_board> board;
 };
 
 /// The actors of a run's crowd, to join to the clock.

@@ -43,9 +43,10 @@ struct enum_names<dropout_kind> {
 /// Names for the `solver` of the controller.
 template <>
 struct enum_names<conflict_solver> {
-  static constexpr std::array<enum_entry<conflict_solver>, 2> entries{{
+  static constexpr std::array<enum_entry<conflict_solver>, 3> entries{{
       {conflict_solver::best_solv, "best_solv"},
       {conflict_solver::all_solv, "all_solv"},
+      {conflict_solver::bound_solv, "bound_solv"},
   }};
 };
 
@@ -86,5 +87,23 @@ constexpr auto yaml_names() {
   for (std::size_t i = 0; i < names.size(); ++i) names[i] = enum_names<Enum>::entries[i].name;
   return names;
 }
+
+/// Names for the `merge` rule of the controller.
+template <>
+struct enum_names<merge_rule> {
+  static constexpr std::array<enum_entry<merge_rule>, 2> entries{{
+      {merge_rule::highest_id, "highest_id"},
+      {merge_rule::negotiation, "negotiation"},
+  }};
+};
+
+/// Names for the sensing `mode`.
+template <>
+struct enum_names<sensing_mode> {
+  static constexpr std::array<enum_entry<sensing_mode>, 2> entries{{
+      {sensing_mode::pixels, "pixels"},
+      {sensing_mode::emulated, "emulated"},
+  }};
+};
 
 }  // namespace argus::config

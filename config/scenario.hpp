@@ -1,5 +1,6 @@
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cstdint>
@@ -129,8 +130,28 @@ struct network_settings {
   friend bool operator==(const network_settings&, const network_settings&) = default;
 };
 
-/// Which CSP solver settles group-group conflicts (Section IV-B, Table 1).
-enum class conflict_solver { best_solv, all_solv };
+/// Which CSP solver settles group-group conflicts (Section IV-B, Table 1): the paper's
+/// BestSolv (default) and AllSolv, and bound_solv, a branch and bound with a tighter bound
+/// and search ordering that returns the same answer (protocol/csp.hpp).
+enum class conflict_solver { best_solv, all_solv, bound_solv };
+
+/// How two leaders of one task merge their groups (Section IV-C): the one with the higher
+/// unique id stays leader, or Fig. 15's negotiation (demote / demoteack / demotenack /
+/// demoteretry with random back-off) for when unique ids are not guaranteed.
+enum class merge_rule { highest_id, negotiation };
+
+/// How camera nodes sense: rendered, degraded video through the low-level visual routines
+/// (Section III), or the emulated sensor (ground truth through a calibrated error model).
+enum class sensing_mode { pixels, emulated };
+
+/// How camera nodes sense (Section III-A, B).
+struct sensing_settings {
+  sensing_mode mode = sensing_mode::pixels;
+  /// The emulated sensor's error model file (relative to the scenario file); empty = the
+  /// model's defaults.
+  std::string sensor_model;
+  friend bool operator==(const sensing_settings&, const sensing_settings&) = default;
+};
 
 /// The camera controller and protocol (Table 2, controller and at-node parameters; eq. 1).
 struct controller_settings {
@@ -150,16 +171,30 @@ struct controller_settings {
   double relevance_sigma_pan_deg = 5.0;
   double relevance_sigma_tilt_deg = 5.0;
   conflict_solver solver = conflict_solver::best_solv;
+  merge_rule merge = merge_rule::highest_id;
+  // Beyond Table 2: what the paper leaves unstated (docs/protocol.md says why each).
+  /// A leader collects bids for this long after announcing an auction, then selects.
+  seconds auction_window{3.0};
+  /// A leader announces its next auction no sooner than this after the last one closed.
+  seconds auction_interval{3.0};
+  /// A node asked for its relevance looks for the target in its view for this long.
+  seconds relevance_look_time{0.5};
+  /// Fig. 15's "random interval": uniform in [0, this].
+  seconds demotion_backoff_max{1.0};
   friend bool operator==(const controller_settings&, const controller_settings&) = default;
 };
 
 /// An operator request: at time `at`, observe pedestrian `pedestrian` starting from camera
-/// `camera`, with at least `cameras_wanted` cameras.
+/// `camera`, with at least `cameras_wanted` and at most `max_cameras` cameras (0 = as many as
+/// wanted).
 struct operator_task {
   seconds at{0.0};
   int pedestrian = 0;
   int camera = 0;
   unsigned cameras_wanted = 1;
+  unsigned max_cameras = 0;
+  /// The number of cameras the group aims for.
+  unsigned cameras_max() const noexcept { return std::max(cameras_wanted, max_cameras); }
   friend bool operator==(const operator_task&, const operator_task&) = default;
 };
 
@@ -188,6 +223,7 @@ struct scenario {
   std::vector<camera_settings> cameras;
   network_settings network;
   controller_settings controller;
+  sensing_settings sensing;
   std::vector<operator_task> tasks;
   std::vector<fault> faults;
   friend bool operator==(const scenario&, const scenario&) = default;

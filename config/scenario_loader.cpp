@@ -19,8 +19,9 @@ namespace argus::config {
 namespace {
 
 // The keys each mapping allows, in schema order (the order "expected one of" lists them).
-constexpr std::array<std::string_view, 8> scenario_keys{"name",    "run",        "world", "cameras",
-                                                        "network", "controller", "tasks", "faults"};
+constexpr std::array<std::string_view, 9> scenario_keys{
+    "name", "run", "world", "cameras", "network", "controller", "sensing", "tasks", "faults"};
+constexpr std::array<std::string_view, 2> sensing_keys{"mode", "sensor_model"};
 constexpr std::array<std::string_view, 6> run_keys{"seed",  "duration", "tick",
                                                    "speed", "threads",  "output_dir"};
 constexpr std::array<std::string_view, 4> world_keys{"layout", "population", "spawn_rate_per_min",
@@ -56,7 +57,7 @@ constexpr std::array<std::string_view, 10> network_keys{"loss_probability",
                                                         "adjacency",
                                                         "duplicate_probability",
                                                         "reorder"};
-constexpr std::array<std::string_view, 15> controller_keys{"wait_timeout",
+constexpr std::array<std::string_view, 20> controller_keys{"wait_timeout",
                                                            "search_timeout",
                                                            "min_relevance",
                                                            "heartbeat_interval",
@@ -70,8 +71,14 @@ constexpr std::array<std::string_view, 15> controller_keys{"wait_timeout",
                                                            "relevance_sigma_fov_deg",
                                                            "relevance_sigma_pan_deg",
                                                            "relevance_sigma_tilt_deg",
-                                                           "solver"};
-constexpr std::array<std::string_view, 4> task_keys{"at", "pedestrian", "camera", "cameras_wanted"};
+                                                           "solver",
+                                                           "merge",
+                                                           "auction_window",
+                                                           "auction_interval",
+                                                           "relevance_look_time",
+                                                           "demotion_backoff_max"};
+constexpr std::array<std::string_view, 5> task_keys{"at", "pedestrian", "camera", "cameras_wanted",
+                                                    "max_cameras"};
 constexpr std::array<std::string_view, 6> fault_keys{"at",   "kind",   "camera",
                                                      "peer", "length", "loss_probability"};
 
@@ -101,6 +108,7 @@ class scenario_parser {
     if (const auto node = document.find("world")) read_world(*node, out.world);
     if (const auto node = document.find("network")) read_network(*node, out.network);
     if (const auto node = document.find("controller")) read_controller(*node, out.controller);
+    if (const auto node = document.find("sensing")) read_sensing(*node, out.sensing);
     if (const auto node = document.find("tasks")) read_tasks(*node, out.tasks);
     if (const auto node = document.find("faults")) read_faults(*node, out.faults);
   }
@@ -342,6 +350,17 @@ class scenario_parser {
     controller.read("relevance_sigma_pan_deg", out.relevance_sigma_pan_deg, positive);
     controller.read("relevance_sigma_tilt_deg", out.relevance_sigma_tilt_deg, positive);
     controller.read("solver", out.solver);
+    controller.read("merge", out.merge);
+    controller.read("auction_window", out.auction_window, positive);
+    controller.read("auction_interval", out.auction_interval, non_negative);
+    controller.read("relevance_look_time", out.relevance_look_time, positive);
+    controller.read("demotion_backoff_max", out.demotion_backoff_max, non_negative);
+  }
+
+  void read_sensing(const YAML::Node& node, sensing_settings& out) {
+    mapping_reader sensing(reader_, node, "sensing", sensing_keys);
+    sensing.read("mode", out.mode);
+    sensing.read("sensor_model", out.sensor_model);
   }
 
   void read_tasks(const YAML::Node& node, std::vector<operator_task>& out) {
@@ -357,6 +376,9 @@ class scenario_parser {
         read_camera_reference(*task.find("camera"), task.field("camera"), read.camera);
       }
       task.read("cameras_wanted", read.cameras_wanted, value_bounds::at_least(1));
+      // No fewer than it wants (checked after cameras_wanted is known).
+      task.read("max_cameras", read.max_cameras,
+                value_bounds::at_least(static_cast<double>(read.cameras_wanted)));
       out.push_back(read);
     }
   }

@@ -134,8 +134,10 @@ std::string adjacency(const std::vector<std::array<int, 2>>& links) {
 }
 
 std::string task(const operator_task& each) {
-  return fmt::format("- {{at: {}, pedestrian: {}, camera: {}, cameras_wanted: {}}}",
-                     duration(each.at), each.pedestrian, each.camera, each.cameras_wanted);
+  auto text = fmt::format("- {{at: {}, pedestrian: {}, camera: {}, cameras_wanted: {}",
+                          duration(each.at), each.pedestrian, each.camera, each.cameras_wanted);
+  if (each.max_cameras != 0) text += fmt::format(", max_cameras: {}", each.max_cameras);
+  return text + "}";
 }
 
 std::string fault_line(const fault& each) {
@@ -205,6 +207,15 @@ std::string to_yaml(const scenario& s) {
   out.entry(1, "relevance_sigma_pan_deg", number(controller.relevance_sigma_pan_deg));
   out.entry(1, "relevance_sigma_tilt_deg", number(controller.relevance_sigma_tilt_deg));
   out.entry(1, "solver", yaml_name(controller.solver));
+  out.entry(1, "merge", yaml_name(controller.merge));
+  out.entry(1, "auction_window", duration(controller.auction_window));
+  out.entry(1, "auction_interval", duration(controller.auction_interval));
+  out.entry(1, "relevance_look_time", duration(controller.relevance_look_time));
+  out.entry(1, "demotion_backoff_max", duration(controller.demotion_backoff_max));
+
+  out.line(0, "sensing:");
+  out.entry(1, "mode", yaml_name(s.sensing.mode));
+  out.entry(1, "sensor_model", quoted(s.sensing.sensor_model));
 
   out.line(0, s.tasks.empty() ? "tasks: []" : "tasks:");
   for (const auto& each : s.tasks) out.line(1, task(each));

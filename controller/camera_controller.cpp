@@ -1,0 +1,759 @@
+#include "controller/camera_controller.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "config/derive_seed.hpp"
+#include "config/enum_names.hpp"
+#include "config/ticks.hpp"
+#include "controller/csp_problem_builder.hpp"
+#include "fmt/format.h"
+#include "fmt/ranges.h"
+#include "protocol/net_message.hpp"
+#include "vision/fixate_zoom.hpp"
+#include "vision/relevance.hpp"
+
+namespace argus::controller {
+namespace {
+
+// The negotiator's stream is the node's own, apart from every other stream of the run.
+constexpr std::uint64_t negotiation_stream = 0x64656d6f7465ULL;  // "demote"
+
+bool better_bid(const protocol::relevance_bid& a, const protocol::relevance_bid& b) {
+  if (a.relevance != b.relevance) return a.relevance > b.relevance;
+  return a.bidder < b.bidder;
+}
+
+std::string_view name_of(vision::tracking_state s) {
+  switch (s) {
+    case vision::tracking_state::track:
+      return "track";
+    case vision::tracking_state::wait:
+      return "wait";
+    case vision::tracking_state::search:
+      return "search";
+    case vision::tracking_state::failed:
+      return "failed";
+  }
+  return "track";
+}
+
+}  // namespace
+
+node_identity node_identity::from(const config::camera_settings& camera) {
+  node_identity me;
+  me.id = camera.id;
+  me.limits = vision::ptz_limits::from(camera);
+  me.home = vision::ptz_state{camera.pan_deg, camera.tilt_deg, camera.field_of_view_deg};
+  me.frame = vision::frame_size{static_cast<int>(camera.imaging.width_px),
+                                static_cast<int>(camera.imaging.height_px)};
+  return me;
+}
+
+std::string_view name_of(node_state s) {
+  switch (s) {
+    case node_state::idle:
+      return "idle";
+    case node_state::computing_relevance:
+      return "computing_relevance";
+    case node_state::performing_task:
+      return "performing_task";
+  }
+  return "idle";
+}
+
+camera_controller::camera_controller(node_identity me, const config::scenario& scenario)
+    : me_(std::move(me)),
+      settings_(scenario.controller),
+      tick_(scenario.run.tick),
+      message_timeout_(scenario.network.message_timeout),
+      fsm_(me_.limits, scenario.controller),
+      negotiator_(config::to_ticks(settings_.merge_timeout, tick_),
+                  config::to_ticks(settings_.demotion_backoff_max, tick_),
+                  config::derive_seed(scenario.run.seed,
+                                      negotiation_stream ^ static_cast<std::uint64_t>(me_.id))),
+      pose_(me_.home) {
+  // nop
+}
+
+std::int64_t camera_controller::ticks(config::seconds d) const {
+  return config::to_ticks_at_least_one(d, tick_);
+}
+
+node_state camera_controller::state() const noexcept {
+  if (task_) return node_state::performing_task;
+  if (!pending_.empty()) return node_state::computing_relevance;
+  return node_state::idle;
+}
+
+std::optional<task_id> camera_controller::task() const {
+  if (!task_) return std::nullopt;
+  return task_->task;
+}
+
+std::vector<int> camera_controller::members() const {
+  std::vector<int> out;
+  for (const auto& [id, m] : members_) out.push_back(id);
+  return out;
+}
+
+double camera_controller::relevance(std::int64_t now) const {
+  if (!task_) return 0.0;
+  // Footnote 2: relevance decays without fresh evidence; here, since the last sighting.
+  const double age = static_cast<double>(now - seen_tick_);
+  const double horizon = static_cast<double>(ticks(settings_.member_failure_timeout));
+  return seen_relevance_ * std::max(0.0, 1.0 - age / horizon);
+}
+
+double camera_controller::relevance_of(const cv::Rect2d& box, bool busy) const {
+  const auto required = vision::centring_pose(pose_, box, me_.frame);
+  return vision::relevance(required, me_.limits, settings_,
+                           busy ? vision::camera_availability::busy
+                                : vision::camera_availability::free);
+}
+
+bool camera_controller::locked() const {
+  return task_ && now_ - joined_ < config::to_ticks(settings_.min_task_duration, tick_);
+}
+
+void camera_controller::send(int to, protocol::group_message m, controller_output& out) const {
+  out.messages.push_back(outgoing_message{to, std::move(m)});
+}
+
+void camera_controller::emit(controller_output& out, std::string_view kind,
+                             const std::string& fields) const {
+  auto json = fmt::format(R"("camera":{})", me_.id);
+  if (!fields.empty()) json += "," + fields;
+  out.events.push_back(controller_event{std::string(kind), std::move(json)});
+}
+
+controller_output camera_controller::step(const controller_input& in) {
+  now_ = in.tick;
+  pose_ = in.pose;
+  controller_output out;
+  take_looks(in, out);
+  for (const auto& q : in.queries) take_query(q, out);
+  for (const auto& m : in.messages) take_message(m, out);
+  run_timers(out);
+  plan_next(out);
+  if (state() != reported_state_) {
+    emit(out, "node_state",
+         fmt::format(R"("from":"{}","to":"{}")", name_of(reported_state_), name_of(state())));
+    reported_state_ = state();
+  }
+  return out;
+}
+
+// --- sensing ---------------------------------------------------------------------------------
+
+void camera_controller::take_looks(const controller_input& in, controller_output& out) {
+  seen_now_.reset();
+  for (const auto& r : in.looks) {
+    if (task_ && r.task == task_->task) {
+      seen_now_ = r;
+      if (r.found) {
+        seen_relevance_ = relevance_of(r.box, false);
+        seen_tick_ = now_;
+      }
+    }
+    for (auto& p : pending_) {
+      if (p.task.task != r.task || p.bid_sent || !r.found) continue;
+      // Fig. 11 / eq. (1): the bid is the relevance as if free; a busy bidder says so.
+      p.relevance = relevance_of(r.box, false);
+      p.seen_tick = now_;
+      if (p.relevance < settings_.min_relevance) {
+        p.look_until = now_;  // below the minimum acceptable relevance: no bid
+        continue;
+      }
+      protocol::relevance_bid bid;
+      bid.task = p.task.task;
+      bid.leader = p.leader;
+      bid.auction = p.auction;
+      bid.bidder = me_.id;
+      bid.relevance = p.relevance;
+      bid.busy = task_.has_value();
+      bid.locked = locked();
+      if (task_) {
+        bid.other_task = task_->task;
+        bid.other_leader = leader_;
+      }
+      send(p.querier, bid, out);
+      p.bid_sent = true;
+      emit(out, "bid",
+           fmt::format(R"("task":{},"leader":{},"auction":{},"relevance":{:.4f},"busy":{})",
+                       bid.task, bid.leader, bid.auction, bid.relevance, bid.busy));
+    }
+  }
+}
+
+void camera_controller::take_query(const operator_query& q, controller_output& out) {
+  if (task_ && task_->task == q.task.task) return;
+  if (task_) leave_task("operator", out);
+  pending_.clear();
+  start_task(q.task, group_role::leader, me_.id, 0.0, now_, out);
+  seen_relevance_ = relevance_of(q.box, false);
+  emit(out, "task_created",
+       fmt::format(R"("task":{},"min_cameras":{},"max_cameras":{},"relevance":{:.4f})",
+                   q.task.task, q.task.min_cameras, q.task.max_cameras, seen_relevance_));
+}
+
+// --- messages --------------------------------------------------------------------------------
+
+void camera_controller::take_message(const received_message& m, controller_output& out) {
+  std::visit(
+      [&](const auto& msg) {
+        using T = std::decay_t<decltype(msg)>;
+        if constexpr (std::is_same_v<T, protocol::query_relevance>) {
+          on_query(m.origin, msg, out);
+        } else if constexpr (std::is_same_v<T, protocol::relevance_bid>) {
+          on_bid(msg, out);
+        } else if constexpr (std::is_same_v<T, protocol::join>) {
+          on_join(msg, out);
+        } else if constexpr (std::is_same_v<T, protocol::status>) {
+          on_status(msg, out);
+        } else if constexpr (std::is_same_v<T, protocol::handover>) {
+          on_handover(msg, out);
+        } else if constexpr (std::is_same_v<T, protocol::demotion>) {
+          on_demotion(msg, out);
+        } else if constexpr (std::is_same_v<T, protocol::csp_query>) {
+          on_csp_query(m.origin, msg, out);
+        } else if constexpr (std::is_same_v<T, protocol::csp_data>) {
+          on_csp_data(msg, out);
+        } else if constexpr (std::is_same_v<T, protocol::csp_result>) {
+          on_csp_result(msg, out);
+        }
+      },
+      m.message);
+}
+
+void camera_controller::on_query(int from, const protocol::query_relevance& q,
+                                 controller_output& out) {
+  const auto t = q.task.task;
+  if (q.relay) {
+    // Section IV-A: a leader recruits through its members, who announce to their neighbours.
+    if (task_ && task_->task == t && role_ == group_role::member && leader_ == q.leader) {
+      auto announce = q;
+      announce.relay = false;
+      send(protocol::broadcast, announce, out);
+    }
+    return;
+  }
+  if (task_ && task_->task == t) {
+    if (role_ == group_role::leader && q.leader != me_.id) met_other_leader(q.leader, out);
+    return;
+  }
+  if (q.leader == me_.id) return;
+  for (auto& p : pending_) {
+    if (p.task.task != t) continue;
+    if (!p.bid_sent) {
+      p.leader = q.leader;
+      p.querier = from;
+      p.auction = q.auction;
+    }
+    return;
+  }
+  pending_query p;
+  p.task = q.task;
+  p.leader = q.leader;
+  p.querier = from;
+  p.auction = q.auction;
+  p.look_until = now_ + ticks(settings_.relevance_look_time);
+  p.give_up_at = now_ + ticks(settings_.bidding_timeout);
+  pending_.push_back(std::move(p));
+  emit(out, "queried",
+       fmt::format(R"("task":{},"leader":{},"auction":{},"from":{})", t, q.leader, q.auction, from));
+}
+
+void camera_controller::on_bid(const protocol::relevance_bid& b, controller_output& out) {
+  if (!task_ || task_->task != b.task || b.leader != leader_) return;
+  if (role_ == group_role::member) {
+    send(leader_, b, out);  // members forward group messages to their leader
+    return;
+  }
+  if (!auction_ || b.auction != auction_->id) return;
+  auto [it, fresh] = auction_->bids.emplace(b.bidder, b);
+  if (!fresh && b.relevance > it->second.relevance) it->second = b;
+}
+
+void camera_controller::on_join(const protocol::join& j, controller_output& out) {
+  if (task_) {
+    if (task_->task == j.task.task) return;
+    if (!j.reassign) {
+      emit(out, "join_refused", fmt::format(R"("task":{},"leader":{},"busy_with":{})",
+                                            j.task.task, j.leader, task_->task));
+      return;
+    }
+    leave_task("reassigned", out);
+  }
+  double r = 0.0;
+  std::int64_t seen = now_;
+  for (const auto& p : pending_) {
+    if (p.task.task != j.task.task || !p.bid_sent) continue;
+    r = p.relevance;
+    seen = p.seen_tick;
+  }
+  pending_.clear();
+  start_task(j.task, group_role::member, j.leader, r, seen, out);
+  emit(out, "joined", fmt::format(R"("task":{},"leader":{},"reassign":{})", j.task.task, j.leader,
+                                  j.reassign));
+  send(protocol::broadcast, own_status(), out);
+}
+
+void camera_controller::on_status(const protocol::status& s, controller_output& out) {
+  if (!task_ || s.task != task_->task || s.sender == me_.id) return;
+  if (role_ == group_role::member) {
+    if (s.sender != leader_) return;
+    last_leader_status_ = now_;
+    if (s.leader != s.sender) {
+      follow_leader(s.leader, "leader_demoted", out);
+      return;
+    }
+    const bool listed = std::find(s.members.begin(), s.members.end(), me_.id) != s.members.end();
+    if (!listed && now_ - joined_ > ticks(settings_.leader_failure_timeout))
+      leave_task("dropped", out);
+    return;
+  }
+  if (s.leader == me_.id) {
+    auto [it, fresh] = members_.emplace(s.sender, member_record{s.relevance, now_, now_});
+    if (!fresh) {
+      it->second.relevance = s.relevance;
+      it->second.last_status = now_;
+    } else {
+      // Section IV-A: "the leader node includes that node into its group".
+      emit(out, "member_added", fmt::format(R"("task":{},"member":{},"reason":"status")",
+                                            s.task, s.sender));
+    }
+    return;
+  }
+  met_other_leader(s.leader == s.sender ? s.sender : s.leader, out);
+}
+
+void camera_controller::on_handover(const protocol::handover& h, controller_output& out) {
+  if (!task_ || role_ != group_role::member || task_->task != h.task.task ||
+      leader_ != h.old_leader)
+    return;
+  if (h.new_leader != me_.id) {
+    leader_ = h.new_leader;
+    last_leader_status_ = now_;
+    return;
+  }
+  become_leader("handover", out);
+  for (int m : h.members)
+    if (m != me_.id) members_[m] = member_record{0.0, now_, now_};
+}
+
+void camera_controller::on_demotion(const protocol::demotion& d, controller_output& out) {
+  if (!task_ || role_ != group_role::leader || d.task != task_->task) {
+    // No longer a leader of that task: the negotiation is over for this side.
+    if (d.step == protocol::demotion_step::demote)
+      send(d.sender, protocol::demotion{protocol::demotion_step::nack, d.task, me_.id, {}}, out);
+    return;
+  }
+  demotion_negotiator::actions a;
+  negotiator_.receive(d.sender, d.step, now_, a);
+  if (d.step == protocol::demotion_step::ack)
+    for (int m : d.members)
+      if (m != me_.id) absorb(m, out);
+  apply_demotions(a, out);
+}
+
+void camera_controller::apply_demotions(const demotion_negotiator::actions& a,
+                                        controller_output& out) {
+  for (const auto& [peer, step] : a.sends) {
+    protocol::demotion d{step, task_->task, me_.id, {}};
+    if (step == protocol::demotion_step::ack) d.members = members();
+    send(peer, d, out);
+    emit(out, protocol::kind_of(d), fmt::format(R"("task":{},"to":{})", d.task, peer));
+  }
+  for (int peer : a.absorbed) absorb(peer, out);
+  if (a.demoted_to) follow_leader(*a.demoted_to, "demoted", out);
+}
+
+// --- transitions -----------------------------------------------------------------------------
+
+void camera_controller::start_task(const protocol::task_description& task, group_role role,
+                                   int leader, double relevance, std::int64_t seen,
+                                   controller_output&) {
+  task_ = task;
+  role_ = role;
+  leader_ = leader;
+  joined_ = now_;
+  last_leader_status_ = now_;
+  seen_relevance_ = relevance;
+  seen_tick_ = seen;
+  fsm_.reset();
+  members_.clear();
+  auction_.reset();
+  csp_.reset();
+  last_bids_.clear();
+  negotiator_.reset();
+  next_auction_at_ = now_;
+}
+
+void camera_controller::leave_task(std::string_view reason, controller_output& out) {
+  if (!task_) return;
+  emit(out, "left_task",
+       fmt::format(R"("task":{},"reason":"{}","role":"{}")", task_->task, reason,
+                   role_ == group_role::leader ? "leader" : "member"));
+  if (role_ == group_role::leader && members_.empty())
+    emit(out, "group_vanished", fmt::format(R"("task":{})", task_->task));
+  task_.reset();
+  members_.clear();
+  auction_.reset();
+  csp_.reset();
+  negotiator_.reset();
+}
+
+void camera_controller::become_leader(std::string_view reason, controller_output& out) {
+  const int previous = leader_;
+  role_ = group_role::leader;
+  leader_ = me_.id;
+  members_.clear();
+  auction_.reset();
+  csp_.reset();
+  negotiator_.reset();
+  next_auction_at_ = now_;
+  emit(out, "leader_changed", fmt::format(R"("task":{},"leader":{},"previous":{},"reason":"{}")",
+                                          task_->task, me_.id, previous, reason));
+}
+
+void camera_controller::follow_leader(int leader, std::string_view reason,
+                                      controller_output& out) {
+  const int previous = leader_;
+  role_ = group_role::member;
+  leader_ = leader;
+  last_leader_status_ = now_;
+  members_.clear();
+  auction_.reset();
+  csp_.reset();
+  negotiator_.reset();
+  emit(out, "leader_changed", fmt::format(R"("task":{},"leader":{},"previous":{},"reason":"{}")",
+                                          task_->task, leader, previous, reason));
+  // At once, so that the new leader counts this node (and this node's members follow).
+  send(protocol::broadcast, own_status(), out);
+}
+
+void camera_controller::met_other_leader(int other, controller_output& out) {
+  if (settings_.merge == config::merge_rule::highest_id) {
+    // Section IV-C: among conflicting leaders the one with the highest id stays leader.
+    if (other > me_.id) follow_leader(other, "demoted", out);
+    return;
+  }
+  negotiator_.met_leader(other, now_);
+}
+
+void camera_controller::absorb(int camera, controller_output& out) {
+  if (camera == me_.id || members_.count(camera) != 0) return;
+  members_[camera] = member_record{0.0, now_, now_};
+  emit(out, "member_added",
+       fmt::format(R"("task":{},"member":{},"reason":"merge")", task_->task, camera));
+}
+
+// --- timers ----------------------------------------------------------------------------------
+
+void camera_controller::run_timers(controller_output& out) {
+  for (auto it = pending_.begin(); it != pending_.end();) {
+    const bool not_found = !it->bid_sent && now_ >= it->look_until;
+    const bool expired = now_ >= it->give_up_at;
+    if (not_found || expired) {
+      emit(out, "query_dropped",
+           fmt::format(R"("task":{},"leader":{},"reason":"{}")", it->task.task, it->leader,
+                       not_found ? "not_found" : "bidding_timeout"));
+      it = pending_.erase(it);
+    } else {
+      ++it;
+    }
+  }
+  if (!task_) return;
+  if (seen_now_) {
+    vision::track_observation obs;
+    obs.found = seen_now_->found;
+    obs.box = cv::Rect(seen_now_->box);
+    obs.score = seen_now_->score;
+    const auto before = fsm_.state();
+    const auto cmd = fsm_.step(obs, pose_, me_.frame, tick_);
+    out.command = cmd.pose;
+    if (cmd.state != before)
+      emit(out, "tracking",
+           fmt::format(R"("task":{},"state":"{}")", task_->task, name_of(cmd.state)));
+  }
+  if (fsm_.state() == vision::tracking_state::failed && members_.empty()) {
+    leave_task("target_lost", out);
+    return;
+  }
+  if (role_ == group_role::leader) {
+    lead(out);
+  } else {
+    follow(out);
+  }
+}
+
+void camera_controller::follow(controller_output& out) {
+  if (now_ - last_leader_status_ >= ticks(settings_.leader_failure_timeout)) {
+    // Section IV-C: no status from the leader in time: it is taken as failed.
+    become_leader("leader_failed", out);
+    lead(out);
+    return;
+  }
+  const bool settled = now_ - joined_ > ticks(settings_.member_failure_timeout);
+  if ((settled && relevance(now_) < settings_.membership_relevance_threshold) ||
+      fsm_.state() == vision::tracking_state::failed) {
+    leave_task("relevance_low", out);
+    return;
+  }
+  if ((now_ - joined_) % ticks(settings_.heartbeat_interval) == 0)
+    send(protocol::broadcast, own_status(), out);
+}
+
+void camera_controller::lead(controller_output& out) {
+  const auto heartbeat = ticks(settings_.heartbeat_interval);
+  const auto silence = ticks(settings_.member_failure_timeout);
+  // Drop members that went silent or whose relevance decayed below the membership threshold.
+  for (auto it = members_.begin(); it != members_.end();) {
+    const auto age = now_ - it->second.last_status;
+    const double decayed = it->second.relevance *
+                           std::max(0.0, 1.0 - static_cast<double>(age) / static_cast<double>(silence));
+    const bool settled = now_ - it->second.joined > silence;
+    const char* why = age >= silence ? "silent"
+                      : settled && decayed < settings_.membership_relevance_threshold
+                          ? "relevance_low"
+                          : nullptr;
+    if (why == nullptr) {
+      ++it;
+      continue;
+    }
+    emit(out, "member_dropped",
+         fmt::format(R"("task":{},"member":{},"reason":"{}")", task_->task, it->first, why));
+    it = members_.erase(it);
+  }
+  const double mine = relevance(now_);
+  if (now_ - joined_ > silence && mine < settings_.membership_relevance_threshold &&
+      !members_.empty()) {
+    // Section IV-A: a leader below the threshold selects a new leader among its members.
+    auto best = members_.begin();
+    for (auto it = members_.begin(); it != members_.end(); ++it)
+      if (it->second.relevance > best->second.relevance) best = it;
+    protocol::handover h{*task_, me_.id, best->first, members()};
+    for (const auto& [m, rec] : members_) send(m, h, out);
+    emit(out, "handoff",
+         fmt::format(R"("task":{},"from":{},"to":{},"relevance":{:.4f})", task_->task, me_.id,
+                     best->first, best->second.relevance));
+    leave_task("handed_over", out);
+    return;
+  }
+  if ((now_ - joined_) % heartbeat == 0) send(protocol::broadcast, own_status(), out);
+  demotion_negotiator::actions a;
+  negotiator_.tick(now_, a);
+  apply_demotions(a, out);
+  if (!task_ || role_ != group_role::leader) return;
+  if (csp_ && (csp_->waiting.empty() || now_ >= csp_->deadline)) solve_csp(out);
+  if (auction_ && now_ >= auction_->closes_at) {
+    close_auction(out);
+  } else if (!auction_ && !csp_ && now_ >= next_auction_at_) {
+    const auto size = 1 + members_.size();
+    if (size < task_->max_cameras || mine < settings_.auction_relevance_threshold)
+      open_auction(out);
+  }
+}
+
+// --- auctions (Fig. 13) ----------------------------------------------------------------------
+
+void camera_controller::open_auction(controller_output& out) {
+  auction_state a;
+  a.id = next_auction_id_++;
+  a.closes_at = now_ + ticks(settings_.auction_window);
+  protocol::query_relevance q{*task_, me_.id, a.id, false};
+  send(protocol::broadcast, q, out);
+  q.relay = true;
+  for (const auto& [m, rec] : members_) send(m, q, out);
+  emit(out, "auction",
+       fmt::format(R"("task":{},"auction":{},"group_size":{},"relevance":{:.4f})", task_->task,
+                   a.id, 1 + members_.size(), relevance(now_)));
+  auction_ = std::move(a);
+}
+
+void camera_controller::close_auction(controller_output& out) {
+  std::vector<protocol::relevance_bid> free, contended;
+  last_bids_.clear();
+  for (const auto& [bidder, b] : auction_->bids) {
+    if (bidder == me_.id || members_.count(bidder) != 0) continue;
+    last_bids_.push_back(b);
+    if (!b.busy) {
+      free.push_back(b);
+    } else if (!b.locked) {
+      contended.push_back(b);
+    }
+  }
+  std::sort(free.begin(), free.end(), better_bid);
+  std::sort(contended.begin(), contended.end(), better_bid);
+  const auto size = 1 + members_.size();
+  std::size_t slots = task_->max_cameras > size ? task_->max_cameras - size : 0;
+  // Handoff: a leader losing its target takes one camera beyond the group's size.
+  if (slots == 0 && relevance(now_) < settings_.auction_relevance_threshold) slots = 1;
+  std::vector<int> chosen;
+  for (const auto& b : free) {
+    if (chosen.size() == slots) break;
+    chosen.push_back(b.bidder);
+  }
+  emit(out, "auction_closed",
+       fmt::format(R"("task":{},"auction":{},"bids":{},"chosen":[{}])", task_->task, auction_->id,
+                   auction_->bids.size(), fmt::join(chosen, ",")));
+  auction_.reset();
+  next_auction_at_ = now_ + config::to_ticks(settings_.auction_interval, tick_);
+  for (int c : chosen) invite(c, false, out);
+  // Section IV-B: busy cameras only when too few are free, and then through the CSP.
+  if (size + chosen.size() < task_->min_cameras && !contended.empty())
+    start_csp(std::move(contended), out);
+}
+
+void camera_controller::invite(int camera, bool reassign, controller_output& out) {
+  send(camera, protocol::join{*task_, me_.id, reassign}, out);
+  // Counted at once; a camera that does not join sends no status and is dropped as silent.
+  double r = 0.0;
+  for (const auto& b : last_bids_)
+    if (b.bidder == camera) r = b.relevance;
+  members_[camera] = member_record{r, now_, now_};
+  emit(out, "invited",
+       fmt::format(R"("task":{},"member":{},"reassign":{})", task_->task, camera, reassign));
+}
+
+// --- conflict resolution (Section IV-B, Fig. 14) ---------------------------------------------
+
+protocol::status camera_controller::own_status() const {
+  protocol::status s;
+  s.task = task_->task;
+  s.sender = me_.id;
+  s.leader = leader_;
+  s.relevance = relevance(now_);
+  s.min_cameras = task_->min_cameras;
+  s.max_cameras = task_->max_cameras;
+  if (role_ == group_role::leader) s.members = members();
+  return s;
+}
+
+protocol::csp_data camera_controller::own_csp_data(std::uint32_t round) const {
+  protocol::csp_data d;
+  d.task = task_->task;
+  d.leader = me_.id;
+  d.round = round;
+  d.min_cameras = task_->min_cameras;
+  d.max_cameras = task_->max_cameras;
+  const auto min_task = config::to_ticks(settings_.min_task_duration, tick_);
+  for (const auto& [m, rec] : members_) {
+    d.candidates.push_back({m, rec.relevance});
+    if (now_ - rec.joined < min_task) d.pinned.push_back(m);
+  }
+  for (const auto& b : last_bids_)
+    if (members_.count(b.bidder) == 0 && !b.locked) d.candidates.push_back({b.bidder, b.relevance});
+  return d;
+}
+
+void camera_controller::start_csp(std::vector<protocol::relevance_bid> contended,
+                                  controller_output& out) {
+  csp_round round;
+  round.round = next_csp_round_++;
+  round.deadline = now_ + 2 * ticks(message_timeout_);
+  for (const auto& b : contended)
+    if (b.other_task && b.other_leader != me_.id) round.waiting[b.other_leader] = *b.other_task;
+  if (round.waiting.empty()) return;
+  std::vector<task_id> tasks;
+  for (const auto& [leader, t] : round.waiting) {
+    tasks.push_back(t);
+    send(leader, protocol::csp_query{task_->task, me_.id, round.round}, out);
+  }
+  std::vector<int> cameras;
+  for (const auto& b : contended) cameras.push_back(b.bidder);
+  emit(out, "conflict", fmt::format(R"("task":{},"with_tasks":[{}],"cameras":[{}])", task_->task,
+                                    fmt::join(tasks, ","), fmt::join(cameras, ",")));
+  round.bids = std::move(contended);
+  csp_ = std::move(round);
+}
+
+void camera_controller::on_csp_query(int from, const protocol::csp_query& q,
+                                     controller_output& out) {
+  if (!task_ || role_ != group_role::leader || q.solver_task == task_->task) return;
+  if (csp_) {
+    // Two leaders centralising the same conflict: the lower task id solves it.
+    if (task_->task < q.solver_task) return;
+    emit(out, "csp_yielded", fmt::format(R"("task":{},"to_task":{})", task_->task, q.solver_task));
+    csp_.reset();
+  }
+  send(from, own_csp_data(q.round), out);
+}
+
+void camera_controller::on_csp_data(const protocol::csp_data& d, controller_output&) {
+  if (!csp_ || d.round != csp_->round || csp_->waiting.erase(d.leader) == 0) return;
+  csp_->data.push_back(d);
+}
+
+void camera_controller::solve_csp(controller_output& out) {
+  auto own = own_csp_data(csp_->round);
+  for (const auto& b : csp_->bids) own.candidates.push_back({b.bidder, b.relevance});
+  std::vector<protocol::csp_data> groups{own};
+  for (const auto& d : csp_->data) groups.push_back(d);
+  const auto built = build_csp(groups, settings_.membership_relevance_threshold);
+  const auto solution = protocol::solve(built.problem, solver_kind(settings_.solver));
+  std::vector<std::string> minima;
+  for (std::size_t g = 0; g < built.groups.size(); ++g)
+    minima.push_back(fmt::format(R"("{}":{})", built.groups[g].task,
+                                 g < solution.minima.size() ? solution.minima[g] : 0));
+  emit(out, "csp_solved",
+       fmt::format(R"("task":{},"solver":"{}","groups":{},"cameras":{},"weight":{:.4f},)"
+                   R"("nodes_explored":{},"backtracks":{},"relaxed":{},"minima":{{{}}})",
+                   task_->task, config::yaml_name(settings_.solver), built.groups.size(),
+                   built.cameras.size(), solution.weight, solution.nodes_explored,
+                   solution.backtracks, solution.relaxed, fmt::join(minima, ",")));
+  for (std::size_t g = 0; g < built.groups.size(); ++g) {
+    const auto cameras = built.assigned(solution, g);
+    const auto& group = built.groups[g];
+    if (group.leader == me_.id) {
+      apply_assignment(cameras, out);
+    } else {
+      const auto minimum = g < solution.minima.size() ? solution.minima[g] : 0u;
+      send(group.leader,
+           protocol::csp_result{group.task, me_.id, cameras, static_cast<std::uint16_t>(minimum)},
+           out);
+    }
+  }
+  csp_.reset();
+}
+
+void camera_controller::on_csp_result(const protocol::csp_result& r, controller_output& out) {
+  if (!task_ || role_ != group_role::leader || r.task != task_->task || csp_) return;
+  emit(out, "csp_applied",
+       fmt::format(R"("task":{},"solver_camera":{},"cameras":[{}])", r.task, r.solver,
+                   fmt::join(r.cameras, ",")));
+  apply_assignment(r.cameras, out);
+}
+
+void camera_controller::apply_assignment(const std::vector<int>& cameras, controller_output& out) {
+  auto assigned = [&](int c) { return std::find(cameras.begin(), cameras.end(), c) != cameras.end(); };
+  for (auto it = members_.begin(); it != members_.end();) {
+    if (assigned(it->first)) {
+      ++it;
+      continue;
+    }
+    emit(out, "member_dropped",
+         fmt::format(R"("task":{},"member":{},"reason":"reassigned")", task_->task, it->first));
+    it = members_.erase(it);
+  }
+  for (int c : cameras)
+    if (c != me_.id && members_.count(c) == 0) invite(c, true, out);
+}
+
+// --- the next frame --------------------------------------------------------------------------
+
+void camera_controller::plan_next(controller_output& out) {
+  if (task_) out.looks.push_back(look_request{task_->task, task_->target});
+  for (const auto& p : pending_) {
+    if (p.bid_sent || now_ >= p.look_until) continue;
+    const bool asked = std::any_of(out.looks.begin(), out.looks.end(),
+                                   [&](const look_request& l) { return l.task == p.task.task; });
+    if (!asked) out.looks.push_back(look_request{p.task.task, p.task.target});
+  }
+  // Section III-C: a camera with no task returns to its default pose (the reset routine).
+  if (!task_ && pending_.empty() && !(pose_ == me_.home)) out.command = me_.home;
+}
+
+}  // namespace argus::controller

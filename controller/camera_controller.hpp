@@ -1,0 +1,178 @@
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string_view>
+#include <vector>
+
+#include "config/scenario.hpp"
+#include "controller/controller_io.hpp"
+#include "controller/demotion_negotiator.hpp"
+#include "vision/frame_size.hpp"
+#include "vision/tracker.hpp"
+
+namespace argus::controller {
+
+/// What a camera node knows of itself: its id, its head's limits and rates, its default pose
+/// and its frame size. No position, no calibration (Section I-B).
+struct node_identity {
+  int id = 0;
+  vision::ptz_limits limits;
+  vision::ptz_state home;
+  vision::frame_size frame;
+  /// The identity of a scenario camera.
+  static node_identity from(const config::camera_settings& camera);
+};
+
+/// The top level of Fig. 10.
+enum class node_state { idle, computing_relevance, performing_task };
+
+/// A node's part in its group.
+enum class group_role { member, leader };
+
+/// Its name in the event log: "idle", "computing_relevance", "performing_task".
+std::string_view name_of(node_state s);
+
+/// The camera controller of one node (Section III-C, Fig. 10) and its part in the grouping
+/// protocol (Section IV, Figs. 13-15), in plain C++: each frame it takes what the node sensed,
+/// its pose and the messages delivered to it, and returns messages, a PTZ command, what to look
+/// for in the next frame, and events. docs/protocol.md describes every rule and timer.
+///
+///              queryrelevance                      join
+///   idle ----------------------> computing ----------------> performing_task
+///    ^  ^                        _relevance                    (track / wait / search)
+///    |  +-- not found / bidding timeout --+                          |
+///    +------------ left the group, task over (reset to home pose) ----+
+///
+/// An operator query makes the node a single-node group it leads (performing_task).
+class camera_controller {
+ public:
+  camera_controller(node_identity me, const config::scenario& scenario);
+
+  /// One frame.
+  controller_output step(const controller_input& in);
+
+  /// The top-level state.
+  node_state state() const noexcept;
+  /// The task this node performs, if any.
+  std::optional<task_id> task() const;
+  /// Its role in its group (meaningful while performing a task).
+  group_role role() const noexcept { return role_; }
+  /// The leader it follows (itself when leading); 0 when in no group.
+  int leader() const noexcept { return task_ ? leader_ : 0; }
+  /// Its members, when it leads (ascending).
+  std::vector<int> members() const;
+  /// The child state of Fig. 10's inset, while performing a task.
+  vision::tracking_state tracking() const noexcept { return fsm_.state(); }
+  /// Its relevance to its task now (eq. (1) at the last sighting, decayed since).
+  double relevance(std::int64_t now) const;
+
+ private:
+  // A query this node is bidding on (computing_relevance).
+  struct pending_query {
+    protocol::task_description task;
+    int leader = 0;
+    int querier = 0;
+    std::uint32_t auction = 0;
+    std::int64_t look_until = 0;
+    std::int64_t give_up_at = 0;
+    bool bid_sent = false;
+    double relevance = 0.0;
+    std::int64_t seen_tick = 0;
+  };
+  struct member_record {
+    double relevance = 0.0;
+    std::int64_t last_status = 0;
+    std::int64_t joined = 0;
+  };
+  struct auction_state {
+    std::uint32_t id = 0;
+    std::int64_t closes_at = 0;
+    std::map<int, protocol::relevance_bid> bids;
+  };
+  struct csp_round {
+    std::uint32_t round = 0;
+    std::int64_t deadline = 0;
+    std::map<int, protocol::task_id> waiting;  // leader -> its task
+    std::vector<protocol::csp_data> data;
+    std::vector<protocol::relevance_bid> bids;  // the bids that raised the conflict
+  };
+
+  // One frame, in order.
+  void take_looks(const controller_input& in, controller_output& out);
+  void take_query(const operator_query& q, controller_output& out);
+  void take_message(const received_message& m, controller_output& out);
+  void on_query(int from, const protocol::query_relevance& q, controller_output& out);
+  void on_bid(const protocol::relevance_bid& b, controller_output& out);
+  void on_join(const protocol::join& j, controller_output& out);
+  void on_status(const protocol::status& s, controller_output& out);
+  void on_handover(const protocol::handover& h, controller_output& out);
+  void on_demotion(const protocol::demotion& d, controller_output& out);
+  void on_csp_query(int from, const protocol::csp_query& q, controller_output& out);
+  void on_csp_data(const protocol::csp_data& d, controller_output& out);
+  void on_csp_result(const protocol::csp_result& r, controller_output& out);
+  void run_timers(controller_output& out);
+  void lead(controller_output& out);
+  void follow(controller_output& out);
+  void plan_next(controller_output& out);
+
+  // Transitions.
+  void start_task(const protocol::task_description& task, group_role role, int leader,
+                  double relevance, std::int64_t seen, controller_output& out);
+  void leave_task(std::string_view reason, controller_output& out);
+  void become_leader(std::string_view reason, controller_output& out);
+  void follow_leader(int leader, std::string_view reason, controller_output& out);
+  void met_other_leader(int other, controller_output& out);
+  void absorb(int camera, controller_output& out);
+
+  // Leader's work.
+  void open_auction(controller_output& out);
+  void close_auction(controller_output& out);
+  void invite(int camera, bool reassign, controller_output& out);
+  void start_csp(std::vector<protocol::relevance_bid> contended, controller_output& out);
+  void solve_csp(controller_output& out);
+  void apply_assignment(const std::vector<int>& cameras, controller_output& out);
+  void apply_demotions(const demotion_negotiator::actions& a, controller_output& out);
+  protocol::csp_data own_csp_data(std::uint32_t round) const;
+  protocol::status own_status() const;
+
+  void send(int to, protocol::group_message m, controller_output& out) const;
+  void emit(controller_output& out, std::string_view kind, const std::string& fields) const;
+  double relevance_of(const cv::Rect2d& box, bool busy) const;
+  std::int64_t ticks(config::seconds d) const;
+  bool locked() const;
+
+  node_identity me_;
+  config::controller_settings settings_;
+  config::seconds tick_;
+  config::seconds message_timeout_;
+  vision::tracking_fsm fsm_;
+  demotion_negotiator negotiator_;
+
+  std::int64_t now_ = 0;
+  vision::ptz_state pose_;
+  node_state reported_state_ = node_state::idle;
+
+  std::vector<pending_query> pending_;
+  // The task performed (performing_task), with the node's part in its group.
+  std::optional<protocol::task_description> task_;
+  group_role role_ = group_role::member;
+  int leader_ = 0;
+  std::int64_t joined_ = 0;
+  std::int64_t last_leader_status_ = 0;
+  double seen_relevance_ = 0.0;
+  std::int64_t seen_tick_ = 0;
+  std::optional<look_result> seen_now_;
+  // Leader only.
+  std::map<int, member_record> members_;
+  std::optional<auction_state> auction_;
+  std::uint32_t next_auction_id_ = 1;
+  std::int64_t next_auction_at_ = 0;
+  // The bids of the last closed auction (candidates for conflict resolution).
+  std::vector<protocol::relevance_bid> last_bids_;
+  std::optional<csp_round> csp_;
+  std::uint32_t next_csp_round_ = 1;
+};
+
+}  // namespace argus::controller

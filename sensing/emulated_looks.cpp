@@ -1,0 +1,63 @@
+#include "sensing/emulated_looks.hpp"
+
+#include "sensing/signature.hpp"
+#include "world/snapshot.hpp"
+
+namespace argus::sensing {
+
+emulated_looks::emulated_looks(vision::sensor_model model, std::uint64_t run_seed, int camera_id,
+                               double min_match)
+    : sensor_(vision::emulated_sensor::for_camera(std::move(model), run_seed, camera_id)),
+      min_match_(min_match) {
+  // nop
+}
+
+std::vector<controller::look_result> emulated_looks::look(
+    const world::snapshot& frame, const world::station& where, const vision::camera_view& view,
+    const std::vector<controller::look_request>& looks) {
+  std::map<controller::task_id, int> kept;
+  std::vector<controller::look_result> out;
+  const auto seen = vision::visible_pedestrians(frame, where, view);
+  for (const auto& l : looks) {
+    const auto wanted = to_histogram(l.target);
+    int best = -1;
+    double best_match = min_match_;
+    const auto followed = following_.find(l.task);
+    for (const auto& v : seen) {
+      const auto* who = frame.find(v.id);
+      const double match =
+          vision::normalized_intersection(wanted, vision::appearance_signature(who->look));
+      if (match < min_match_) continue;
+      if (followed != following_.end() && followed->second == v.id) {
+        best = v.id;
+        break;
+      }
+      if (match > best_match) {
+        best_match = match;
+        best = v.id;
+      }
+    }
+    controller::look_result r{l.task, false, {}, 0.0};
+    if (best >= 0) {
+      const auto observed = sensor_.look_for(best, frame, where, view);
+      if (observed.found) {
+        r.found = true;
+        r.box = cv::Rect2d(observed.detection.box);
+        r.score = observed.detection.confidence;
+        kept[l.task] = observed.detection.pedestrian_id;
+      }
+    }
+    if (!r.found && followed != following_.end()) kept[l.task] = followed->second;
+    out.push_back(r);
+  }
+  following_ = std::move(kept);
+  return out;
+}
+
+protocol::signature emulated_looks::acquire(controller::task_id task,
+                                            const world::snapshot& frame, int id) {
+  following_[task] = id;
+  return to_signature(vision::appearance_signature(frame.find(id)->look));
+}
+
+}  // namespace argus::sensing

@@ -1,0 +1,31 @@
+#pragma once
+
+#include <map>
+#include <vector>
+
+#include "controller/controller_io.hpp"
+#include "opencv2/core.hpp"
+#include "vision/tracker.hpp"
+
+namespace argus::sensing {
+
+/// A camera node's sensing on its own pixels (Section III-B): one colour-indexing tracker
+/// (vision::tracker: ratio-histogram backprojection, Fig. 9 localisation, acceptance by
+/// histogram intersection) per target the controller asks for. Node-side: it sees only the
+/// frames it is given.
+class pixel_sensor {
+ public:
+  /// Looks for every requested target in `bgr`; trackers of targets no longer asked for are
+  /// dropped, new ones search the whole frame.
+  std::vector<controller::look_result> look(const cv::Mat& bgr,
+                                            const std::vector<controller::look_request>& looks);
+
+  /// The operator picked the pedestrian in `box` for `task`: its signature from the pixels
+  /// in the box, and a tracker started there.
+  protocol::signature acquire(controller::task_id task, const cv::Mat& bgr, const cv::Rect& box);
+
+ private:
+  std::map<controller::task_id, vision::tracker> trackers_;
+};
+
+}  // namespace argus::sensing

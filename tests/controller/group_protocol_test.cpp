@@ -1,0 +1,170 @@
+// The grouping protocol (Section IV, Figs. 13 and 15) between camera controllers on an ideal
+// network, frame by frame: auctions, joins, heartbeats, failures, hand-over and merging.
+
+#include <gtest/gtest.h>
+
+#include "tests/controller/protocol_harness.hpp"
+
+namespace argus::controller {
+namespace {
+
+using testing::centred_box;
+using testing::poor_box;
+using testing::protocol_harness;
+using testing::test_scenario;
+using testing::test_task;
+
+// Cameras 1, 2 and 3. The operator tasks camera 1 with a target that 2 sees well and 3 poorly.
+//
+//   1 (leader) --queryrelevance--> 2, 3 --relevance--> 1 --join--> best free bidder
+protocol_harness three_cameras(config::scenario s = test_scenario({1, 2, 3})) {
+  protocol_harness h(std::move(s));
+  h.sees = [](int camera, task_id, std::int64_t) -> std::optional<cv::Rect2d> {
+    if (camera == 2) return centred_box();
+    if (camera == 3) return poor_box();
+    return centred_box();
+  };
+  h.operator_query_at(0, 1, test_task());
+  return h;
+}
+
+TEST(group_protocol, an_operator_task_forms_a_group_of_the_best_bidders) {
+  auto h = three_cameras();
+  h.run_until(100);
+  EXPECT_EQ(h.node(1).state(), node_state::performing_task);
+  EXPECT_EQ(h.node(1).role(), group_role::leader);
+  EXPECT_EQ(h.node(1).members(), std::vector<int>{2});
+  EXPECT_EQ(h.node(2).state(), node_state::performing_task);
+  EXPECT_EQ(h.node(2).leader(), 1);
+  // 3 bid too, lost the auction and waits for a join until the bidding timeout (10 s here).
+  EXPECT_EQ(h.node(3).state(), node_state::computing_relevance);
+  EXPECT_EQ(h.count("bid", 3), 1u);
+  h.run_until(130);
+  EXPECT_EQ(h.node(3).state(), node_state::idle);
+  EXPECT_EQ(h.count("task_created", 1), 1u);
+  EXPECT_GE(h.count("auction", 1), 1u);
+}
+
+TEST(group_protocol, a_lost_bid_leaves_the_auction_to_the_others) {
+  auto h = three_cameras();
+  h.drop = [](int from, int, const protocol::group_message& m) {
+    return from == 2 && std::holds_alternative<protocol::relevance_bid>(m);
+  };
+  h.run_until(60);
+  EXPECT_EQ(h.node(1).members(), std::vector<int>{3});
+  EXPECT_EQ(h.node(3).leader(), 1);
+}
+
+TEST(group_protocol, members_send_status_every_heartbeat) {
+  auto h = three_cameras();
+  h.run_until(100);
+  const auto before = h.sent("status");
+  h.run_until(200);  // 10 s: two nodes, one status each per second
+  EXPECT_EQ(h.sent("status") - before, 20u);
+}
+
+TEST(group_protocol, a_silent_member_is_dropped_and_replaced) {
+  auto h = three_cameras();
+  h.run_until(100);
+  ASSERT_EQ(h.node(1).members(), std::vector<int>{2});
+  h.crash(2);
+  h.run_until(160);  // member failure timeout 5 s
+  EXPECT_EQ(h.count("member_dropped", 1), 1u);
+  h.run_until(260);
+  EXPECT_EQ(h.node(1).members(), std::vector<int>{3});
+}
+
+TEST(group_protocol, a_member_takes_over_when_its_leader_falls_silent) {
+  auto h = three_cameras();
+  h.run_until(100);
+  h.crash(1);
+  h.run_until(125);  // leader failure timeout 3 s
+  EXPECT_EQ(h.node(2).role(), group_role::leader);
+  EXPECT_EQ(h.count("leader_changed", 2), 1u);
+}
+
+TEST(group_protocol, a_leader_that_loses_its_target_hands_the_group_over) {
+  auto h = three_cameras();
+  h.run_until(100);
+  h.sees = [](int camera, task_id, std::int64_t) -> std::optional<cv::Rect2d> {
+    if (camera == 1) return std::nullopt;
+    return centred_box();
+  };
+  h.run_until(200);
+  EXPECT_EQ(h.count("handoff", 1), 1u);
+  EXPECT_EQ(h.node(2).role(), group_role::leader);
+  EXPECT_EQ(h.node(1).state(), node_state::idle);
+}
+
+// Two leaders of one task (as after a leader's crash is wrongly presumed): the groups merge.
+protocol_harness two_leaders(config::merge_rule rule) {
+  auto s = test_scenario({1, 2, 3});
+  s.controller.merge = rule;
+  protocol_harness h(std::move(s));
+  h.sees = [](int, task_id, std::int64_t) -> std::optional<cv::Rect2d> { return centred_box(); };
+  h.operator_query_at(0, 1, test_task(1, 3));
+  h.operator_query_at(0, 2, test_task(1, 3));
+  return h;
+}
+
+TEST(group_protocol, two_leaders_of_one_task_merge_under_the_highest_id) {
+  auto h = two_leaders(config::merge_rule::highest_id);
+  h.run_until(100);
+  EXPECT_EQ(h.leaders(7), std::set<int>{2});
+  EXPECT_EQ(h.node(1).leader(), 2);
+}
+
+TEST(group_protocol, two_leaders_of_one_task_merge_by_negotiation) {
+  auto h = two_leaders(config::merge_rule::negotiation);
+  h.run_until(300);
+  EXPECT_EQ(h.leaders(7).size(), 1u);
+  EXPECT_GE(h.sent("demote"), 1u);
+  EXPECT_GE(h.sent("demoteack"), 1u);
+}
+
+// Camera 2 serves task 7 with leader 1 when task 8 arrives at camera 3, wanting two cameras;
+// 2 is the only other camera that sees 8's target. Camera 1 sees 7's target only.
+protocol_harness contested(config::scenario s) {
+  protocol_harness h(std::move(s));
+  h.sees = [](int camera, task_id task, std::int64_t) -> std::optional<cv::Rect2d> {
+    if (camera == 2) return centred_box();
+    if (camera == 3 && task == 8) return centred_box();
+    if (camera == 1 && task == 7) return centred_box();
+    return std::nullopt;
+  };
+  h.operator_query_at(0, 1, test_task(2, 2));
+  auto other = test_task(2, 2);
+  other.task = 8;
+  h.operator_query_at(100, 3, other);
+  return h;
+}
+
+TEST(group_protocol, a_camera_within_its_minimum_task_duration_is_not_taken) {
+  auto h = contested(test_scenario({1, 2, 3}));
+  h.run_until(300);
+  EXPECT_EQ(h.node(2).task(), 7u);
+  EXPECT_EQ(h.count("conflict"), 0u);
+  EXPECT_GE(h.count("bid", 2), 1u);  // 2 bid for task 8, busy and locked
+}
+
+TEST(group_protocol, a_busy_camera_is_settled_by_conflict_resolution) {
+  auto s = test_scenario({1, 2, 3});
+  s.controller.min_task_duration = config::seconds{0.0};
+  auto h = contested(std::move(s));
+  h.run_until(300);
+  EXPECT_GE(h.count("conflict", 3), 1u);
+  EXPECT_GE(h.count("csp_solved", 3), 1u);
+  EXPECT_GE(h.sent("cspquery"), 1u);
+  EXPECT_GE(h.sent("cspdata"), 1u);
+  // Each group needs 2 and only camera 2 can move: the minima are relaxed, and camera 2 ends
+  // up in exactly one of the groups, the one the solver gave it to.
+  const auto g7 = h.node(1).members();
+  const auto g8 = h.node(3).members();
+  const bool in7 = std::find(g7.begin(), g7.end(), 2) != g7.end();
+  const bool in8 = std::find(g8.begin(), g8.end(), 2) != g8.end();
+  EXPECT_NE(in7, in8);
+  EXPECT_EQ(h.node(2).task(), in7 ? 7u : 8u);
+}
+
+}  // namespace
+}  // namespace argus::controller

@@ -1,0 +1,76 @@
+// The protocol's messages on the wire: every kind survives its encoding, and bytes that are
+// not a whole, valid message are refused rather than half-read.
+
+#include "protocol/group_messages.hpp"
+
+#include <gtest/gtest.h>
+
+namespace argus::protocol {
+namespace {
+
+task_description a_task() {
+  task_description t;
+  t.task = 3;
+  t.target.values.assign(256, 0.0f);
+  t.target.values[10] = 0.25f;
+  t.target.values[200] = 0.75f;
+  t.min_cameras = 2;
+  t.max_cameras = 3;
+  return t;
+}
+
+std::vector<group_message> one_of_each() {
+  relevance_bid bid{3, 1, 4, 9, 0.625, true, false, 5u, 6};
+  return {query_relevance{a_task(), 1, 4, true},
+          bid,
+          join{a_task(), 1, true},
+          status{3, 9, 1, 0.5, 2, 3, {2, 9}},
+          handover{a_task(), 1, 9, {2, 9}},
+          demotion{demotion_step::demote, 3, 1, {}},
+          demotion{demotion_step::ack, 3, 1, {4, 5}},
+          demotion{demotion_step::nack, 3, 1, {}},
+          demotion{demotion_step::retry, 3, 1, {}},
+          csp_query{3, 1, 2},
+          csp_data{3, 1, 2, 1, 2, {{4, 0.5}, {5, 0.25}}, {4}},
+          csp_result{3, 1, {4, 5}, 1}};
+}
+
+TEST(group_messages, every_kind_survives_its_encoding) {
+  for (const auto& m : one_of_each()) {
+    const auto back = decode(kind_of(m), encode(m));
+    ASSERT_TRUE(back) << kind_of(m);
+    EXPECT_EQ(*back, m) << kind_of(m);
+  }
+}
+
+TEST(group_messages, the_paper_names_the_kinds) {
+  auto all = one_of_each();
+  EXPECT_EQ(kind_of(all[0]), "queryrelevance");
+  EXPECT_EQ(kind_of(all[1]), "relevance");
+  EXPECT_EQ(kind_of(all[2]), "join");
+  EXPECT_EQ(kind_of(all[3]), "status");
+  EXPECT_EQ(kind_of(all[6]), "demoteack");
+  EXPECT_EQ(kind_of(all[7]), "demotenack");
+  EXPECT_EQ(kind_of(all[8]), "demoteretry");
+}
+
+TEST(group_messages, truncated_or_padded_bytes_are_refused) {
+  for (const auto& m : one_of_each()) {
+    const auto bytes = encode(m);
+    for (std::size_t n = 0; n < bytes.size(); ++n)
+      EXPECT_FALSE(decode(kind_of(m), bytes.substr(0, n))) << kind_of(m) << " cut at " << n;
+    EXPECT_FALSE(decode(kind_of(m), bytes + "x")) << kind_of(m);
+  }
+}
+
+TEST(group_messages, out_of_range_values_are_refused) {
+  auto bid = relevance_bid{3, 1, 4, 9, 1.5, false, false, std::nullopt, 0};
+  EXPECT_FALSE(decode("relevance", encode(bid)));
+  auto q = query_relevance{a_task(), 1, 4, false};
+  q.task.min_cameras = 4;  // more than the maximum
+  EXPECT_FALSE(decode("queryrelevance", encode(q)));
+  EXPECT_FALSE(decode("nosuchkind", encode(bid)));
+}
+
+}  // namespace
+}  // namespace argus::protocol
