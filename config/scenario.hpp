@@ -129,8 +129,10 @@ struct network_settings {
   friend bool operator==(const network_settings&, const network_settings&) = default;
 };
 
-/// Which CSP solver settles group-group conflicts (Section IV-B, Table 1).
-enum class conflict_solver { best_solv, all_solv };
+/// Which CSP solver settles group-group conflicts (Section IV-B, Table 1): the paper's
+/// BestSolv (default) and AllSolv, and bound_solv, a branch and bound with a tighter bound
+/// and search ordering that returns the same answer (protocol/csp.hpp).
+enum class conflict_solver { best_solv, all_solv, bound_solv };
 
 /// The camera controller and protocol (Table 2, controller and at-node parameters; eq. 1).
 struct controller_settings {
