@@ -1,0 +1,94 @@
+#include "protocol/csp.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "fmt/format.h"
+#include "protocol/csp_search.hpp"
+
+namespace argus::protocol {
+namespace {
+
+void validate(const csp_problem& problem) {
+  if (!(problem.threshold >= 0.0))
+    throw std::invalid_argument(
+        fmt::format("csp: threshold must be a non-negative number, got {}", problem.threshold));
+  for (std::size_t g = 0; g < problem.groups.size(); ++g) {
+    const auto& group = problem.groups[g];
+    if (group.min_cameras > group.max_cameras)
+      throw std::invalid_argument(
+          fmt::format("csp: group {}: min_cameras {} exceeds max_cameras {}", g, group.min_cameras,
+                      group.max_cameras));
+    if (group.relevance.size() > problem.camera_count)
+      throw std::invalid_argument(fmt::format("csp: group {}: {} relevances for {} cameras", g,
+                                              group.relevance.size(), problem.camera_count));
+    for (std::size_t c = 0; c < group.relevance.size(); ++c)
+      if (std::isinf(group.relevance[c]))
+        throw std::invalid_argument(
+            fmt::format("csp: group {}: relevance of camera {} is infinite", g, c));
+  }
+}
+
+/// Lowers one minimum by one, by the order stated in csp.hpp ("Relaxation"); false when every
+/// minimum is already 0.
+bool lower_one_minimum(std::vector<unsigned>& minima,
+                       const std::vector<std::vector<std::size_t>>& relevant) {
+  const std::size_t count = minima.size();
+  // 1. A group that cannot be served whatever the others do, the highest index.
+  for (std::size_t g = count; g-- > 0;) {
+    if (minima[g] > relevant[g].size()) {
+      --minima[g];
+      return true;
+    }
+  }
+  // 2. The largest minimum of 2 or more, ties by highest index.
+  std::size_t chosen = count;
+  for (std::size_t g = 0; g < count; ++g)
+    if (minima[g] >= 2 && (chosen == count || minima[g] >= minima[chosen])) chosen = g;
+  // 3. Else a minimum of 1: the group with the fewest relevant cameras, ties by highest index.
+  if (chosen == count)
+    for (std::size_t g = 0; g < count; ++g)
+      if (minima[g] == 1 && (chosen == count || relevant[g].size() <= relevant[chosen].size()))
+        chosen = g;
+  if (chosen == count) return false;
+  --minima[chosen];
+  return true;
+}
+
+csp_search::outcome search(const csp_search::round_problem& round, csp_solver_kind solver) {
+  switch (solver) {
+    case csp_solver_kind::all_solv:
+      return csp_search::lexicographic_search(round, false);
+    case csp_solver_kind::best_solv:
+      return csp_search::lexicographic_search(round, true);
+    case csp_solver_kind::bound_solv:
+      return csp_search::bound_search(round);
+  }
+  throw std::invalid_argument("csp: unknown solver");
+}
+
+}  // namespace
+
+csp_solution solve(const csp_problem& problem, csp_solver_kind solver) {
+  validate(problem);
+  const auto relevant = csp_search::relevant_cameras(problem);
+  csp_solution solution;
+  for (const auto& group : problem.groups) solution.minima.push_back(group.min_cameras);
+  while (true) {
+    const auto found = search({problem, solution.minima, relevant}, solver);
+    solution.nodes_explored += found.nodes_explored;
+    solution.backtracks += found.backtracks;
+    solution.solutions += found.solutions;
+    if (found.found) {
+      solution.solved = true;
+      solution.assignment = found.best;
+      solution.weight = found.weight;
+      return solution;
+    }
+    if (!lower_one_minimum(solution.minima, relevant)) return solution;
+    solution.relaxed = true;
+  }
+}
+
+}  // namespace argus::protocol
