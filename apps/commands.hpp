@@ -22,6 +22,9 @@ void add_feeds_command(CLI::App& app, int& result);
 /// Adds `argus vision` (the low-level visual routines: `localize`) to `app`.
 void add_vision_command(CLI::App& app, int& result);
 
+/// Adds `argus csp` (conflict resolution: `solve` a file, regenerate `table1`) to `app`.
+void add_csp_command(CLI::App& app, int& result);
+
 /// Adds `argus validate` to `app`; its callback sets `result` to the command's exit code.
 void add_validate_command(CLI::App& app, int& result);
 

@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
   argus::apps::add_render_command(app, result);
   argus::apps::add_feeds_command(app, result);
   argus::apps::add_vision_command(app, result);
+  argus::apps::add_csp_command(app, result);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

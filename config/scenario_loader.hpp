@@ -41,7 +41,7 @@
 ///              min_task_duration: 1 min, membership_relevance_threshold: 0.1,
 ///              merge_timeout: 5 min, bidding_timeout: 2 min, relevance_sigma_fov_deg: 5,
 ///              relevance_sigma_pan_deg: 5, relevance_sigma_tilt_deg: 5,
-///              solver: best_solv}                           # best_solv | all_solv
+///              solver: best_solv}              # best_solv | all_solv | bound_solv
 /// tasks:                                     # at, pedestrian, camera required
 ///   - {at: 10 s, pedestrian: 12, camera: 7, cameras_wanted: 2}
 /// faults:                                    # at, kind, camera required

@@ -34,19 +34,7 @@ class lexicographic_backtracking {
   }
 
   outcome run() {
-    ++result_.nodes_explored;  // the root
-    if (group_count_ == 0) {
-      ++result_.solutions;
-      best_.offer(round_, chosen_, 0.0);
-    } else {
-      visit(0, 0.0);
-    }
-    result_.found = best_.found();
-    if (result_.found) {
-      result_.best = best_.best();
-      result_.weight = best_.weight();
-    }
-    return result_;
+    return search_from_root(round_, best_, result_, [&] { visit(0, 0.0); });
   }
 
  private:

@@ -32,19 +32,9 @@ class branch_and_bound {
   }
 
   outcome run() {
-    ++result_.nodes_explored;  // the root
-    if (group_count_ == 0) {
-      ++result_.solutions;
-      best_.offer(round_, chosen_, 0.0);
-    } else if (minima_reachable()) {
-      visit(0, 0.0);
-    }
-    result_.found = best_.found();
-    if (result_.found) {
-      result_.best = best_.best();
-      result_.weight = best_.weight();
-    }
-    return result_;
+    return search_from_root(round_, best_, result_, [&] {
+      if (minima_reachable()) visit(0, 0.0);
+    });
   }
 
  private:

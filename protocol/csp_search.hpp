@@ -77,6 +77,27 @@ struct outcome {
   std::uint64_t solutions = 0;
 };
 
+/// The frame every search shares: counts the root as a node; a problem without groups has
+/// one complete assignment, the empty one, else `descend()` searches; the answer is what
+/// `best` holds at the end, with the effort `descend` counted in `effort`.
+template <class Descend>
+outcome search_from_root(const round_problem& round, incumbent& best, outcome& effort,
+                         Descend descend) {
+  ++effort.nodes_explored;
+  if (round.problem.groups.empty()) {
+    ++effort.solutions;
+    best.offer(round, assignment{}, 0.0);
+  } else {
+    descend();
+  }
+  effort.found = best.found();
+  if (effort.found) {
+    effort.best = best.best();
+    effort.weight = best.weight();
+  }
+  return effort;
+}
+
 /// AllSolv (bounded = false) and BestSolv (bounded = true): groups in index order, values in
 /// lexicographic order.
 outcome lexicographic_search(const round_problem& round, bool bounded);

@@ -189,6 +189,15 @@ TEST(scenario_loader, color_response_on_enables_the_default_response) {
   EXPECT_EQ(loaded.cameras[0].imaging.response, color_response{});
 }
 
+TEST(scenario_loader, reads_every_conflict_solver) {
+  EXPECT_EQ(parse_scenario("controller: {solver: all_solv}\n", "x.yaml").controller.solver,
+            conflict_solver::all_solv);
+  EXPECT_EQ(parse_scenario("controller: {solver: best_solv}\n", "x.yaml").controller.solver,
+            conflict_solver::best_solv);
+  EXPECT_EQ(parse_scenario("controller: {solver: bound_solv}\n", "x.yaml").controller.solver,
+            conflict_solver::bound_solv);
+}
+
 TEST(scenario_loader, loads_the_minimal_scenario) {
   const auto loaded =
       load_scenario(std::filesystem::path{ARGUS_SOURCE_DIR} / "scenarios" / "minimal.yaml");

@@ -40,6 +40,12 @@ TEST(scenario_writer, round_trips_a_full_scenario) {
   expect_same(round_trip(original), original);
 }
 
+TEST(scenario_writer, round_trips_the_bound_solv_solver) {
+  const auto original = parse_scenario("controller: {solver: bound_solv}\n", "defaults.yaml");
+  EXPECT_NE(to_yaml(original).find("\n  solver: bound_solv\n"), std::string::npos);
+  expect_same(round_trip(original), original);
+}
+
 TEST(scenario_writer, round_trips_a_defaults_only_scenario) {
   const auto original = parse_scenario("", "defaults.yaml");
   expect_same(round_trip(original), original);
