@@ -146,9 +146,7 @@ bool choose_target(follower& f, const world::snapshot& frame, const world::stati
   });
   const auto limits = vision::ptz_limits::from(*f.camera);
   for (const auto& candidate : candidates) {
-    const vision::ptz_pose from{f.pose.pan_deg, f.pose.tilt_deg, f.pose.field_of_view_deg};
-    const auto goal = vision::centring_pose(from, candidate.box, size, 0.5);
-    const auto zoomed = limits.clamp({goal.pan_deg, goal.tilt_deg, goal.field_of_view_deg});
+    const auto zoomed = limits.clamp(vision::centring_pose(f.pose, candidate.box, size, 0.5));
     follower trial = f;
     trial.pose = zoomed;
     // In the zoomed view the target must still be in sight and hardly occluded.
@@ -257,7 +255,7 @@ cell_result run_cell(const config::scenario& scenario, std::shared_ptr<const wor
                             ? vision::color_histogram::of_region(image, inner_part(box))
                             : vision::appearance_signature(crowd.current()->find(p.id)->look));
         f.track->start(box);
-        f.fsm.emplace(*f.camera, scenario.controller);
+        f.fsm.emplace(vision::ptz_limits::from(*f.camera), scenario.controller);
       }
   }
   const int ticks = static_cast<int>(std::lround(seconds / tick_s));
@@ -270,9 +268,7 @@ cell_result run_cell(const config::scenario& scenario, std::shared_ptr<const wor
       if (f.fsm->state() != vision::tracking_state::failed)
         seen = f.track->update(capture(render, f, frame, tick, tick_s, width, height));
       score_frame(f, seen, frame, *where, width, height);
-      const vision::ptz_pose current{f.pose.pan_deg, f.pose.tilt_deg, f.pose.field_of_view_deg};
-      const auto next = f.fsm->step(seen, current, {width, height}, dt).pose;
-      f.pose = {next.pan_deg, next.tilt_deg, next.field_of_view_deg};
+      f.pose = f.fsm->step(seen, f.pose, {width, height}, dt).pose;
     }
   }
   cell_result result{d.name, n.name, {}, 0.0};

@@ -9,14 +9,6 @@ namespace {
 
 constexpr double deg = std::numbers::pi / 180.0;
 
-double clamp_to(double value, const config::degree_range& range) {
-  return std::clamp(value, range.min_deg, range.max_deg);
-}
-
-double approach(double from, double to, double max_step) {
-  return from + std::clamp(to - from, -max_step, max_step);
-}
-
 // Wraps an angle difference into (-180, 180].
 double wrapped(double d) {
   return std::remainder(d, 360.0);
@@ -28,8 +20,8 @@ double focal_length_px(double field_of_view_deg, int frame_width_px) {
   return 0.5 * frame_width_px / std::tan(0.5 * field_of_view_deg * deg);
 }
 
-ptz_pose centring_pose(const ptz_pose& current, const cv::Rect2d& box, const frame_size& frame,
-                       double height_fraction) {
+ptz_state centring_pose(const ptz_state& current, const cv::Rect2d& box, const frame_size& frame,
+                        double height_fraction) {
   const double f = focal_length_px(current.field_of_view_deg, frame.width_px);
   // The ray through the box centre in camera axes (x right, y up, z forward).
   const double cx = box.x + box.width / 2.0 - frame.width_px / 2.0;
@@ -41,7 +33,7 @@ ptz_pose centring_pose(const ptz_pose& current, const cv::Rect2d& box, const fra
   const double up[3] = {-std::sin(t) * std::cos(p), -std::sin(t) * std::sin(p), std::cos(t)};
   double w[3];
   for (int i = 0; i < 3; ++i) w[i] = cx * right[i] + cy * up[i] + f * fwd[i];
-  ptz_pose goal;
+  ptz_state goal;
   goal.pan_deg = std::atan2(w[1], w[0]) / deg;
   goal.tilt_deg = std::atan2(w[2], std::hypot(w[0], w[1])) / deg;
   // Zoom: the focal length that makes the box height_fraction of the frame height.
@@ -52,26 +44,11 @@ ptz_pose centring_pose(const ptz_pose& current, const cv::Rect2d& box, const fra
   return goal;
 }
 
-ptz_pose slew_towards(const ptz_pose& current, const ptz_pose& goal,
-                      const config::camera_settings& camera, config::seconds dt) {
-  const double s = dt.count();
-  ptz_pose next;
-  next.pan_deg = clamp_to(approach(current.pan_deg, goal.pan_deg, camera.pan_rate_deg_per_s * s),
-                          camera.pan_limits);
-  next.tilt_deg =
-      clamp_to(approach(current.tilt_deg, goal.tilt_deg, camera.tilt_rate_deg_per_s * s),
-               camera.tilt_limits);
-  next.field_of_view_deg = clamp_to(
-      approach(current.field_of_view_deg, goal.field_of_view_deg, camera.zoom_rate_deg_per_s * s),
-      camera.field_of_view_limits);
-  return next;
-}
-
-ptz_pose fixate_zoom_step(const ptz_pose& current, const cv::Rect2d& box, const frame_size& frame,
-                          const config::camera_settings& camera, config::seconds dt,
-                          const fixate_zoom_settings& settings) {
+ptz_state fixate_zoom_step(const ptz_state& current, const cv::Rect2d& box, const frame_size& frame,
+                           const ptz_limits& limits, config::seconds dt,
+                           const fixate_zoom_settings& settings) {
   const auto goal = centring_pose(current, box, frame, settings.height_fraction);
-  ptz_pose wanted = current;
+  ptz_state wanted = current;
   auto move = [&](double from, double to, double gain) {
     return std::abs(to - from) < settings.dead_band_deg ? from : from + gain * (to - from);
   };
@@ -80,7 +57,7 @@ ptz_pose fixate_zoom_step(const ptz_pose& current, const cv::Rect2d& box, const 
   wanted.field_of_view_deg =
       current.field_of_view_deg +
       settings.zoom_gain * (goal.field_of_view_deg - current.field_of_view_deg);
-  return slew_towards(current, wanted, camera, dt);
+  return slew_towards(current, wanted, limits, dt);
 }
 
 }  // namespace argus::vision

@@ -3,12 +3,13 @@
 // Image-driven fixate and zoom (Section III-B): pan/tilt to bring a box to the image centre,
 // field of view so that it fills a set fraction of the frame height. They use only the
 // camera's own pan, tilt and field of view and the box in pixels (pinhole relation between
-// field of view and focal length; no calibration, no world positions). See ptz_pose.hpp for
-// the angle conventions.
+// field of view and focal length; no calibration, no world positions). See ptz_camera.hpp for
+// the angle conventions and the motion model (slew_towards) they share with the renderer.
 
 #include "config/scenario.hpp"
 #include "opencv2/core.hpp"
-#include "vision/ptz_pose.hpp"
+#include "vision/frame_size.hpp"
+#include "vision/ptz_camera.hpp"
 
 namespace argus::vision {
 
@@ -19,8 +20,8 @@ double focal_length_px(double field_of_view_deg, int frame_width_px);
 /// about the vertical, tilt about the panned horizontal axis) with a field of view in which
 /// the box's height is `height_fraction` of the frame height. Not clamped to any limits: this
 /// is the "pan, tilt and zoom required to centre the pedestrian" of eq. (1).
-ptz_pose centring_pose(const ptz_pose& current, const cv::Rect2d& box, const frame_size& frame,
-                       double height_fraction = 0.5);
+ptz_state centring_pose(const ptz_state& current, const cv::Rect2d& box, const frame_size& frame,
+                        double height_fraction = 0.5);
 
 /// Gains and set point of the fixate and zoom controllers.
 struct fixate_zoom_settings {
@@ -35,13 +36,10 @@ struct fixate_zoom_settings {
 };
 
 /// One step of fixate and zoom: moves `current` a fraction of the way to centring_pose(),
-/// clamped to the camera's limits and to its slew rates over `dt`.
-ptz_pose fixate_zoom_step(const ptz_pose& current, const cv::Rect2d& box, const frame_size& frame,
-                          const config::camera_settings& camera, config::seconds dt,
-                          const fixate_zoom_settings& settings = {});
-
-/// Moves `current` towards `goal` within the camera's limits and slew rates over `dt`.
-ptz_pose slew_towards(const ptz_pose& current, const ptz_pose& goal,
-                      const config::camera_settings& camera, config::seconds dt);
+/// within `limits` and their slew rates over `dt` (slew_towards(), the model ptz_camera::step
+/// follows: commanding the result and stepping the head by `dt` shows exactly this pose).
+ptz_state fixate_zoom_step(const ptz_state& current, const cv::Rect2d& box, const frame_size& frame,
+                           const ptz_limits& limits, config::seconds dt,
+                           const fixate_zoom_settings& settings = {});
 
 }  // namespace argus::vision

@@ -21,8 +21,11 @@ double clamp_range(double v, const config::degree_range& r) {
   return std::clamp(v, r.min_deg, r.max_deg);
 }
 
+// At most `max_step` from `from` toward `to`; exactly `to` once within reach.
 double approach(double from, double to, double max_step) {
-  return from + std::clamp(to - from, -max_step, max_step);
+  const double delta = to - from;
+  if (std::abs(delta) <= max_step) return to;
+  return from + std::clamp(delta, -max_step, max_step);
 }
 
 }  // namespace
@@ -52,6 +55,28 @@ ptz_limits ptz_limits::from(const config::camera_settings& camera) {
   limits.tilt_rate_deg_per_s = camera.tilt_rate_deg_per_s;
   limits.zoom_rate_deg_per_s = camera.zoom_rate_deg_per_s;
   return limits;
+}
+
+ptz_state slew_towards(const ptz_state& current, const ptz_state& goal, const ptz_limits& limits,
+                       config::seconds dt) {
+  const double s = std::max(0.0, dt.count());
+  const ptz_state to = limits.clamp(goal);
+  ptz_state next;
+  if (limits.pan_wraps()) {
+    // Shorter way round; the result is wrapped back into (-180, 180].
+    const double delta = wrap_deg(to.pan_deg - current.pan_deg);
+    const double max_step = limits.pan_rate_deg_per_s * s;
+    next.pan_deg = std::abs(delta) <= max_step
+                       ? to.pan_deg
+                       : current.pan_deg + std::clamp(delta, -max_step, max_step);
+  } else {
+    next.pan_deg = approach(current.pan_deg, to.pan_deg, limits.pan_rate_deg_per_s * s);
+  }
+  next.tilt_deg = approach(current.tilt_deg, to.tilt_deg, limits.tilt_rate_deg_per_s * s);
+  next.field_of_view_deg =
+      approach(current.field_of_view_deg, to.field_of_view_deg, limits.zoom_rate_deg_per_s * s);
+  // Within the limits whatever `current` was: a static camera stays on its pose.
+  return limits.clamp(next);
 }
 
 camera_placement camera_placement::from(const config::camera_settings& camera) {
@@ -133,20 +158,8 @@ void ptz_camera::command(const ptz_state& wanted) {
   target_ = limits_.clamp(wanted);
 }
 
-void ptz_camera::step(std::chrono::duration<double> dt) {
-  const double s = std::max(0.0, dt.count());
-  if (limits_.pan_wraps()) {
-    // Shorter way round; the result is wrapped back into (-180, 180].
-    const double delta = wrap_deg(target_.pan_deg - state_.pan_deg);
-    const double moved =
-        std::clamp(delta, -limits_.pan_rate_deg_per_s * s, limits_.pan_rate_deg_per_s * s);
-    state_.pan_deg = moved == delta ? target_.pan_deg : wrap_deg(state_.pan_deg + moved);
-  } else {
-    state_.pan_deg = approach(state_.pan_deg, target_.pan_deg, limits_.pan_rate_deg_per_s * s);
-  }
-  state_.tilt_deg = approach(state_.tilt_deg, target_.tilt_deg, limits_.tilt_rate_deg_per_s * s);
-  state_.field_of_view_deg = approach(state_.field_of_view_deg, target_.field_of_view_deg,
-                                      limits_.zoom_rate_deg_per_s * s);
+void ptz_camera::step(config::seconds dt) {
+  state_ = slew_towards(state_, target_, limits_, dt);
 }
 
 }  // namespace argus::vision

@@ -25,6 +25,8 @@ namespace argus::vision {
 
 /// What a camera node may know about itself: its current pan, tilt and field of view (zoom).
 /// No position: a camera knows nothing of where it stands (no calibration reaches the node).
+/// The one pose type: what the controllers (fixate and zoom, the tracking FSM) command, what
+/// relevance (eq. 1) scores, and what the renderer shows.
 struct ptz_state {
   double pan_deg = 0.0;
   double tilt_deg = -20.0;
@@ -50,6 +52,15 @@ struct ptz_limits {
   /// The limits a scenario's camera declares; a static camera's collapse onto its pose.
   static ptz_limits from(const config::camera_settings& camera);
 };
+
+/// The one motion model of a PTZ head, shared by ptz_camera::step and the controllers: moves
+/// `current` toward `goal` (clamped to `limits`) by at most each axis's rate times `dt`,
+///   x' = x + clamp(goal - x, -rate dt, rate dt),
+/// pan the shorter way round when it wraps (and the result wrapped into (-180, 180]),
+/// arriving exactly on the goal once within reach. The result lies within `limits`, so a
+/// static camera (collapsed ranges, zero rates) never moves from its pose.
+ptz_state slew_towards(const ptz_state& current, const ptz_state& goal, const ptz_limits& limits,
+                       config::seconds dt);
 
 /// Where a camera is mounted: known only to the simulator (renderer, emulated sensing), never
 /// handed to a camera node.
@@ -105,9 +116,8 @@ class ptz_camera {
 
   /// Sets the pose to slew to (clamped to the limits); movement happens in step().
   void command(const ptz_state& wanted);
-  /// Moves each axis toward the target by at most its rate times `dt`:
-  /// x' = x + clamp(target - x, -rate dt, rate dt) (pan the shorter way round if it wraps).
-  void step(std::chrono::duration<double> dt);
+  /// Moves each axis toward the target by at most its rate times `dt`: slew_towards().
+  void step(config::seconds dt);
   /// Whether the pose has reached the target.
   bool settled() const noexcept { return state_ == target_; }
 

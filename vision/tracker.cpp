@@ -52,10 +52,9 @@ track_observation tracker::update(const cv::Mat& bgr) {
   return *seen;
 }
 
-tracking_fsm::tracking_fsm(const config::camera_settings& camera,
-                           const config::controller_settings& controller,
+tracking_fsm::tracking_fsm(const ptz_limits& limits, const config::controller_settings& controller,
                            tracking_fsm_settings settings)
-    : camera_(camera), controller_(controller), settings_(settings) {
+    : limits_(limits), controller_(controller), settings_(settings) {
   // nop
 }
 
@@ -64,26 +63,39 @@ void tracking_fsm::reset() {
   in_state_ = config::seconds{0.0};
 }
 
-ptz_pose tracking_fsm::search_step(const ptz_pose& current, config::seconds dt) {
-  // Sweep pan to one limit, step tilt by a row, sweep back (Fig. 10 inset, Search).
-  ptz_pose goal = current;
-  goal.field_of_view_deg = camera_.field_of_view_limits.max_deg;
-  const auto& pan = camera_.pan_limits;
-  const double end = sweep_direction_ > 0 ? pan.max_deg : pan.min_deg;
-  if (std::abs(current.pan_deg - end) < 1e-6) {
-    sweep_direction_ = -sweep_direction_;
-    const double row = current.field_of_view_deg * (1.0 - settings_.search_row_overlap);
-    search_tilt_deg_ += row;
-    if (search_tilt_deg_ > camera_.tilt_limits.max_deg)
-      search_tilt_deg_ = camera_.tilt_limits.min_deg + current.field_of_view_deg / 2.0;
-  }
-  goal.pan_deg = sweep_direction_ > 0 ? pan.max_deg : pan.min_deg;
-  goal.tilt_deg =
-      std::clamp(search_tilt_deg_, camera_.tilt_limits.min_deg, camera_.tilt_limits.max_deg);
-  return slew_towards(current, goal, camera_, dt);
+void tracking_fsm::next_search_row(const ptz_state& current) {
+  sweep_direction_ = -sweep_direction_;
+  const double row = current.field_of_view_deg * (1.0 - settings_.search_row_overlap);
+  search_tilt_deg_ += row;
+  if (search_tilt_deg_ > limits_.tilt.max_deg)
+    search_tilt_deg_ = limits_.tilt.min_deg + current.field_of_view_deg / 2.0;
 }
 
-tracking_command tracking_fsm::step(const track_observation& observation, const ptz_pose& current,
+ptz_state tracking_fsm::search_step(const ptz_state& current, config::seconds dt) {
+  // Sweep pan to one limit, step tilt by a row, sweep back (Fig. 10 inset, Search).
+  ptz_state goal = current;
+  goal.field_of_view_deg = limits_.field_of_view.max_deg;
+  if (limits_.pan_wraps()) {
+    // No limit to reach: a sweep is one full turn, made by always aiming less than half a turn
+    // ahead (slew_towards takes the shorter way).
+    swept_deg_ += std::abs(std::remainder(current.pan_deg - search_pan_deg_, 360.0));
+    search_pan_deg_ = current.pan_deg;
+    if (swept_deg_ >= 360.0) {
+      next_search_row(current);
+      swept_deg_ = 0.0;
+    }
+    goal.pan_deg = current.pan_deg + sweep_direction_ * 90.0;
+  } else {
+    const auto& pan = limits_.pan;
+    const double end = sweep_direction_ > 0 ? pan.max_deg : pan.min_deg;
+    if (std::abs(current.pan_deg - end) < 1e-6) next_search_row(current);
+    goal.pan_deg = sweep_direction_ > 0 ? pan.max_deg : pan.min_deg;
+  }
+  goal.tilt_deg = std::clamp(search_tilt_deg_, limits_.tilt.min_deg, limits_.tilt.max_deg);
+  return slew_towards(current, goal, limits_, dt);
+}
+
+tracking_command tracking_fsm::step(const track_observation& observation, const ptz_state& current,
                                     const frame_size& frame, config::seconds dt) {
   auto enter = [this](tracking_state next) {
     state_ = next;
@@ -100,6 +112,8 @@ tracking_command tracking_fsm::step(const track_observation& observation, const 
       enter(tracking_state::search);
       sweep_direction_ = 1.0;
       search_tilt_deg_ = current.tilt_deg;
+      search_pan_deg_ = current.pan_deg;
+      swept_deg_ = 0.0;
     } else if (state_ == tracking_state::search && in_state_ >= controller_.search_timeout) {
       enter(tracking_state::failed);
       return {state_, current};
@@ -109,12 +123,12 @@ tracking_command tracking_fsm::step(const track_observation& observation, const 
     case tracking_state::track:
       if (!settings_.follow_in_track) return {state_, current};
       return {state_,
-              fixate_zoom_step(current, observation.box, frame, camera_, dt, settings_.fixate)};
+              fixate_zoom_step(current, observation.box, frame, limits_, dt, settings_.fixate)};
     case tracking_state::wait: {
       // Widen the zoom gradually to reacquire; pan and tilt hold.
-      ptz_pose goal = current;
+      ptz_state goal = current;
       goal.field_of_view_deg += settings_.wait_zoom_out_deg_per_s * dt.count();
-      return {state_, slew_towards(current, goal, camera_, dt)};
+      return {state_, slew_towards(current, goal, limits_, dt)};
     }
     case tracking_state::search:
       return {state_, search_step(current, dt)};

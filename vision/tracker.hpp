@@ -9,8 +9,9 @@
 #include "opencv2/core.hpp"
 #include "vision/color_histogram.hpp"
 #include "vision/fixate_zoom.hpp"
+#include "vision/frame_size.hpp"
 #include "vision/multiscale_localizer.hpp"
-#include "vision/ptz_pose.hpp"
+#include "vision/ptz_camera.hpp"
 
 namespace argus::vision {
 
@@ -87,7 +88,7 @@ struct tracking_fsm_settings {
 /// What the child FSM commands for the next frame.
 struct tracking_command {
   tracking_state state = tracking_state::track;
-  ptz_pose pose;
+  ptz_state pose;
 };
 
 /// The child FSM of Fig. 10 (inset):
@@ -97,17 +98,20 @@ struct tracking_command {
 ///     +----found-----+--------found-----------+
 ///
 /// Track: fixate and zoom on the target. Wait: hold pan and tilt and widen the zoom gradually
-/// to reacquire. Search: sweep pan across its limits at the widest field of view, stepping
-/// tilt by rows. Timeouts are Table 2's (controller_settings). Time comes from `dt` only.
+/// to reacquire. Search: sweep pan across its limits (a full turn when pan wraps) at the widest
+/// field of view, stepping tilt by a row at the end of each sweep and sweeping back. Every
+/// command moves within the head's limits and slew rates (slew_towards()), so a static camera
+/// holds its pose in every state. Timeouts are Table 2's (controller_settings). Time comes
+/// from `dt` only.
 class tracking_fsm {
  public:
-  /// A child FSM for `camera` (limits, slew rates) with `controller`'s timeouts.
-  tracking_fsm(const config::camera_settings& camera, const config::controller_settings& controller,
+  /// A child FSM for a head with `limits` (ranges, slew rates) with `controller`'s timeouts.
+  tracking_fsm(const ptz_limits& limits, const config::controller_settings& controller,
                tracking_fsm_settings settings = {});
 
   /// One frame: the tracker's observation, the camera's pose, the frame size and the time
   /// since the last step.
-  tracking_command step(const track_observation& observation, const ptz_pose& current,
+  tracking_command step(const track_observation& observation, const ptz_state& current,
                         const frame_size& frame, config::seconds dt);
 
   /// The current state.
@@ -117,15 +121,19 @@ class tracking_fsm {
   void reset();
 
  private:
-  ptz_pose search_step(const ptz_pose& current, config::seconds dt);
+  ptz_state search_step(const ptz_state& current, config::seconds dt);
+  void next_search_row(const ptz_state& current);
 
-  config::camera_settings camera_;
+  ptz_limits limits_;
   config::controller_settings controller_;
   tracking_fsm_settings settings_;
   tracking_state state_ = tracking_state::track;
   config::seconds in_state_{0.0};
   double sweep_direction_ = 1.0;
   double search_tilt_deg_ = 0.0;
+  // When pan wraps: the pan of the last Search step and how far this sweep has turned.
+  double search_pan_deg_ = 0.0;
+  double swept_deg_ = 0.0;
 };
 
 }  // namespace argus::vision

@@ -5,12 +5,14 @@
 #include <cmath>
 #include <numbers>
 
+#include "tests/vision/static_camera.hpp"
+
 namespace argus::vision {
 namespace {
 
 constexpr double deg = std::numbers::pi / 180.0;
 
-// A simulated pan-tilt pinhole camera (same conventions as ptz_pose.hpp) looking at a
+// A simulated pan-tilt pinhole camera (same conventions as ptz_camera.hpp) looking at a
 // pedestrian-sized target (0.6 m x 1.8 m) at a world position:
 //
 //        z (up)
@@ -20,7 +22,7 @@ constexpr double deg = std::numbers::pi / 180.0;
 struct simulated_camera {
   frame_size frame{320, 240};
   // The target's box in the image for a pose, from the target's centre position.
-  cv::Rect2d project(const ptz_pose& pose, const double target[3]) const {
+  cv::Rect2d project(const ptz_state& pose, const double target[3]) const {
     const double p = pose.pan_deg * deg, t = pose.tilt_deg * deg;
     const double fwd[3] = {std::cos(t) * std::cos(p), std::cos(t) * std::sin(p), std::sin(t)};
     const double right[3] = {std::sin(p), -std::cos(p), 0.0};
@@ -47,7 +49,7 @@ double centre_error_px(const cv::Rect2d& box, const frame_size& frame) {
 TEST(fixate_zoom, centring_pose_centres_the_box) {
   simulated_camera camera;
   const double target[3] = {20.0, 6.0, -5.0};
-  ptz_pose pose{10.0, -5.0, 40.0};
+  ptz_state pose{10.0, -5.0, 40.0};
   auto box = camera.project(pose, target);
   auto goal = centring_pose(pose, box, camera.frame, 0.5);
   auto centred = camera.project(goal, target);
@@ -61,9 +63,9 @@ TEST(fixate_zoom, centring_pose_centres_the_box) {
 
 TEST(fixate_zoom, converges_without_overshoot) {
   simulated_camera camera;
-  config::camera_settings settings;  // limits and slew rates
+  const ptz_limits settings;  // limits and slew rates
   const double target[3] = {20.0, -8.0, -6.0};
-  ptz_pose pose{25.0, 0.0, 60.0};
+  ptz_state pose{25.0, 0.0, 60.0};
   auto box = camera.project(pose, target);
   double first_error = centre_error_px(box, camera.frame);
   double previous = first_error;
@@ -85,10 +87,10 @@ TEST(fixate_zoom, converges_without_overshoot) {
 }
 
 TEST(fixate_zoom, respects_limits_and_slew_rates) {
-  config::camera_settings settings;
-  settings.pan_limits = {-10.0, 10.0};
-  settings.field_of_view_limits = {20.0, 50.0};
-  ptz_pose pose{9.0, 0.0, 30.0};
+  ptz_limits settings;
+  settings.pan = {-10.0, 10.0};
+  settings.field_of_view = {20.0, 50.0};
+  ptz_state pose{9.0, 0.0, 30.0};
   // A tiny box far right: wants lots of pan to the right (negative) and a narrow FOV.
   cv::Rect2d box(300, 110, 4, 12);
   auto next = fixate_zoom_step(pose, box, {320, 240}, settings, config::seconds{1.0 / 15.0});
@@ -98,6 +100,62 @@ TEST(fixate_zoom, respects_limits_and_slew_rates) {
   auto wide = slew_towards(pose, {100.0, 0.0, 90.0}, settings, config::seconds{10.0});
   EXPECT_EQ(wide.pan_deg, 10.0);
   EXPECT_EQ(wide.field_of_view_deg, 50.0);
+}
+
+TEST(fixate_zoom, slew_towards_pans_the_shorter_way_round) {
+  const ptz_limits limits;  // pan [-180, 180] wraps; 60 deg/s
+  // From 170 to -170 is 20 degrees through 180, not 340 through 0.
+  auto next =
+      slew_towards({170.0, -20.0, 45.0}, {-170.0, -20.0, 45.0}, limits, config::seconds{0.1});
+  EXPECT_NEAR(next.pan_deg, 176.0, 1e-9);
+  next = slew_towards(next, {-170.0, -20.0, 45.0}, limits, config::seconds{0.1});
+  EXPECT_NEAR(next.pan_deg, -178.0, 1e-9);  // across 180, wrapped into (-180, 180]
+  next = slew_towards(next, {-170.0, -20.0, 45.0}, limits, config::seconds{1.0});
+  EXPECT_EQ(next.pan_deg, -170.0);
+  // A goal kept continuous past 180 (as centring_pose does) is the same pose.
+  EXPECT_EQ(slew_towards({170.0, -20.0, 45.0}, {190.0, -20.0, 45.0}, limits, config::seconds{1.0})
+                .pan_deg,
+            -170.0);
+  // Without wrap (limits narrower than a turn), pan goes the long way within its limits.
+  ptz_limits narrow;
+  narrow.pan = {-175.0, 175.0};
+  EXPECT_NEAR(
+      slew_towards({170.0, -20.0, 45.0}, {-170.0, -20.0, 45.0}, narrow, config::seconds{0.1})
+          .pan_deg,
+      164.0, 1e-9);
+}
+
+TEST(fixate_zoom, a_static_camera_never_moves) {
+  const auto limits = ptz_limits::from(test_support::static_camera());
+  const ptz_state fixed{30.0, -25.0, 40.0};
+  const config::seconds dt{1.0 / 15.0};
+  // A box far off-centre and small: fixate and zoom would turn and zoom a lot.
+  EXPECT_EQ(fixate_zoom_step(fixed, cv::Rect2d(300, 10, 4, 12), {320, 240}, limits, dt), fixed);
+  EXPECT_EQ(slew_towards(fixed, {-100.0, 5.0, 80.0}, limits, config::seconds{100.0}), fixed);
+}
+
+TEST(fixate_zoom, the_step_is_what_the_head_shows_after_the_same_dt) {
+  // What a node commands is what the renderer shows: the head, commanded the step's pose and
+  // stepped by the same dt, arrives exactly there.
+  ptz_limits limits;
+  limits.pan = {-90.0, 90.0};
+  const config::seconds dt{1.0 / 15.0};
+  for (const auto& limits_under_test :
+       {limits, ptz_limits{}, ptz_limits::from(test_support::static_camera())})
+    for (const ptz_state& start : {ptz_state{0.0, -20.0, 45.0}, ptz_state{175.0, -70.0, 10.0},
+                                   ptz_state{30.0, -25.0, 40.0}}) {
+      ptz_camera head(limits_under_test, start);
+      const auto current = head.state();
+      for (const cv::Rect2d& box :
+           {cv::Rect2d(300, 10, 4, 12), cv::Rect2d(0, 200, 30, 40), cv::Rect2d(150, 110, 20, 20)}) {
+        const auto next = fixate_zoom_step(current, box, {320, 240}, limits_under_test, dt);
+        ptz_camera moved = head;
+        moved.command(next);
+        moved.step(dt);
+        EXPECT_EQ(moved.state(), next);
+        EXPECT_TRUE(moved.settled());
+      }
+    }
 }
 
 }  // namespace

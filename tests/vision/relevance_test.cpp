@@ -4,16 +4,18 @@
 
 #include <cmath>
 
+#include "tests/vision/static_camera.hpp"
+
 namespace argus::vision {
 namespace {
 
 // pan [-60, 60], tilt [-80, 10], fov [5, 45]: mid-ranges 0, -35, 25.
-config::camera_settings camera() {
+ptz_limits camera() {
   config::camera_settings c;
   c.pan_limits = {-60.0, 60.0};
   c.tilt_limits = {-80.0, 10.0};
   c.field_of_view_limits = {5.0, 45.0};
-  return c;
+  return ptz_limits::from(c);
 }
 
 TEST(relevance, one_at_the_centre_of_the_ranges) {
@@ -52,6 +54,29 @@ TEST(relevance, spreads_come_from_controller_settings) {
   controller.relevance_sigma_fov_deg = 2.0;
   EXPECT_NEAR(relevance({10.0, -15.0, 27.0}, camera(), controller, camera_availability::free),
               std::exp(-0.5 - 0.5 - 0.5), 1e-12);
+}
+
+TEST(relevance, a_static_camera_is_judged_from_its_fixed_pose) {
+  // Its limits collapse onto its pose (pan 30, tilt -25, fov 40): the hat values of eq. (1).
+  const auto limits = ptz_limits::from(test_support::static_camera());
+  config::controller_settings controller;
+  EXPECT_DOUBLE_EQ(relevance({30.0, -25.0, 40.0}, limits, controller, camera_availability::free),
+                   1.0);
+  // One sigma off in pan and in field of view: exp(-1/2 - 1/2).
+  EXPECT_NEAR(relevance({35.0, -25.0, 35.0}, limits, controller, camera_availability::free),
+              std::exp(-1.0), 1e-12);
+}
+
+TEST(relevance, a_wrapping_pan_is_measured_the_shorter_way_round) {
+  ptz_limits limits;  // pan [-180, 180]: mid-range 0, wraps
+  limits.tilt = {-80.0, 10.0};
+  limits.field_of_view = {5.0, 45.0};
+  config::controller_settings controller;
+  // 355 degrees is 5 degrees the other way: one sigma.
+  EXPECT_NEAR(relevance({355.0, -35.0, 25.0}, limits, controller, camera_availability::free),
+              std::exp(-0.5), 1e-12);
+  EXPECT_NEAR(relevance({-355.0, -35.0, 25.0}, limits, controller, camera_availability::free),
+              std::exp(-0.5), 1e-12);
 }
 
 }  // namespace

@@ -65,10 +65,8 @@ TEST(rendered_localization, finds_the_target_at_every_zoom_with_the_paper_scales
     std::vector<camera_view> zoomed;
     std::vector<cv::Rect2d> truth;
     for (double fraction : {0.3, 0.5, 0.8}) {
-      const ptz_pose wide_pose{wide.pose.pan_deg, wide.pose.tilt_deg, wide.pose.field_of_view_deg};
-      const auto pose = centring_pose(wide_pose, candidate.box, {width, height}, fraction);
       camera_view view = wide;
-      view.pose = {pose.pan_deg, pose.tilt_deg, pose.field_of_view_deg};
+      view.pose = centring_pose(wide.pose, candidate.box, {width, height}, fraction);
       const auto p = seen(frame, *station, view, candidate.id);
       if (!p || p->occlusion > 0.1) break;
       zoomed.push_back(view);

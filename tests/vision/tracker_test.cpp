@@ -2,9 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
+#include <vector>
 
 #include "opencv2/imgproc.hpp"
+#include "tests/vision/static_camera.hpp"
 
 namespace argus::vision {
 namespace {
@@ -79,20 +82,20 @@ TEST(tracker, holds_through_partial_occlusion_and_regains_after_full) {
   EXPECT_EQ(regained, 25);           // and regained after it
 }
 
-config::camera_settings ptz_camera() {
-  config::camera_settings camera;
-  camera.pan_limits = {-90.0, 90.0};
-  camera.tilt_limits = {-60.0, 0.0};
-  camera.field_of_view_limits = {10.0, 60.0};
-  return camera;
+ptz_limits ptz_head() {
+  ptz_limits limits;
+  limits.pan = {-90.0, 90.0};
+  limits.tilt = {-60.0, 0.0};
+  limits.field_of_view = {10.0, 60.0};
+  return limits;
 }
 
 TEST(tracking_fsm, wait_widens_the_zoom_then_search_sweeps_then_fails) {
   config::controller_settings controller;  // Table 2: wait 2 min, search 5 min
-  tracking_fsm fsm(ptz_camera(), controller);
+  tracking_fsm fsm(ptz_head(), controller);
   const frame_size frame{320, 240};
   const config::seconds dt{1.0 / 15.0};
-  ptz_pose pose{0.0, -20.0, 20.0};
+  ptz_state pose{0.0, -20.0, 20.0};
   track_observation seen{true, cv::Rect(150, 80, 20, 60), 0.9};
   auto command = fsm.step(seen, pose, frame, dt);
   EXPECT_EQ(command.state, tracking_state::track);
@@ -138,13 +141,63 @@ TEST(tracking_fsm, wait_widens_the_zoom_then_search_sweeps_then_fails) {
 }
 
 TEST(tracking_fsm, track_fixates_on_the_box) {
-  tracking_fsm fsm(ptz_camera(), config::controller_settings{});
-  ptz_pose pose{0.0, -20.0, 30.0};
+  tracking_fsm fsm(ptz_head(), config::controller_settings{});
+  ptz_state pose{0.0, -20.0, 30.0};
   // Target right of and above the centre: pan right (negative), tilt up.
   auto command = fsm.step({true, cv::Rect(250, 20, 20, 60), 0.9}, pose, {320, 240},
                           config::seconds{1.0 / 15.0});
   EXPECT_LT(command.pose.pan_deg, 0.0);
   EXPECT_GT(command.pose.tilt_deg, -20.0);
+}
+
+TEST(tracking_fsm, a_static_camera_holds_its_pose_in_every_state) {
+  config::controller_settings controller;
+  controller.wait_timeout = config::seconds{1.0};
+  controller.search_timeout = config::seconds{20.0};
+  tracking_fsm fsm(ptz_limits::from(test_support::static_camera()), controller);
+  const ptz_state fixed{30.0, -25.0, 40.0};
+  const config::seconds dt{1.0 / 15.0};
+  EXPECT_EQ(fsm.step({true, cv::Rect(300, 10, 4, 12), 0.9}, fixed, {320, 240}, dt).pose, fixed);
+  track_observation lost{false, cv::Rect(300, 10, 4, 12), 0.0};
+  bool searched = false;
+  for (int k = 0; k < 15 * 30 && fsm.state() != tracking_state::failed; ++k) {
+    const auto command = fsm.step(lost, fixed, {320, 240}, dt);
+    searched = searched || command.state == tracking_state::search;
+    EXPECT_EQ(command.pose, fixed) << "frame " << k;
+  }
+  EXPECT_TRUE(searched);
+  EXPECT_EQ(fsm.state(), tracking_state::failed);
+}
+
+TEST(tracking_fsm, search_turns_all_the_way_round_when_pan_wraps) {
+  ptz_limits limits;  // pan [-180, 180]: no limit to sweep to
+  config::controller_settings controller;
+  controller.wait_timeout = config::seconds{1.0};
+  tracking_fsm fsm(limits, controller);
+  const config::seconds dt{1.0 / 15.0};
+  ptz_state pose{0.0, -20.0, 45.0};
+  track_observation lost{false, cv::Rect(150, 80, 20, 60), 0.0};
+  fsm.step({true, lost.box, 0.9}, pose, {320, 240}, dt);
+  while (fsm.step(lost, pose, {320, 240}, dt).state != tracking_state::search) {
+  }
+  // 60 deg/s: a turn takes 6 s. Over 20 s the sweep turns, steps a row, turns back.
+  double turned = 0.0, most_turned = 0.0;
+  bool came_back = false;
+  std::vector<double> tilts{pose.tilt_deg};
+  for (int k = 0; k < 15 * 20; ++k) {
+    const auto next = fsm.step(lost, pose, {320, 240}, dt).pose;
+    turned += std::remainder(next.pan_deg - pose.pan_deg, 360.0);
+    most_turned = std::max(most_turned, turned);
+    came_back = came_back || (most_turned >= 360.0 && std::abs(turned) < 10.0);
+    if (next.tilt_deg != tilts.back()) tilts.push_back(next.tilt_deg);
+    EXPECT_GT(next.pan_deg, -180.0);
+    EXPECT_LE(next.pan_deg, 180.0);
+    pose = next;
+  }
+  EXPECT_GE(most_turned, 360.0);  // one way all the way round
+  EXPECT_TRUE(came_back);         // then back
+  EXPECT_GE(tilts.size(), 2u);    // on another row
+  EXPECT_EQ(pose.field_of_view_deg, 90.0);
 }
 
 }  // namespace
