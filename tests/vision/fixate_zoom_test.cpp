@@ -5,6 +5,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "tests/vision/static_camera.hpp"
+
 namespace argus::vision {
 namespace {
 
@@ -123,17 +125,8 @@ TEST(fixate_zoom, slew_towards_pans_the_shorter_way_round) {
       164.0, 1e-9);
 }
 
-config::camera_settings static_camera() {
-  config::camera_settings c;
-  c.type = config::camera_type::static_camera;
-  c.pan_deg = 30.0;
-  c.tilt_deg = -25.0;
-  c.field_of_view_deg = 40.0;
-  return c;
-}
-
 TEST(fixate_zoom, a_static_camera_never_moves) {
-  const auto limits = ptz_limits::from(static_camera());
+  const auto limits = ptz_limits::from(test_support::static_camera());
   const ptz_state fixed{30.0, -25.0, 40.0};
   const config::seconds dt{1.0 / 15.0};
   // A box far off-centre and small: fixate and zoom would turn and zoom a lot.
@@ -147,7 +140,8 @@ TEST(fixate_zoom, the_step_is_what_the_head_shows_after_the_same_dt) {
   ptz_limits limits;
   limits.pan = {-90.0, 90.0};
   const config::seconds dt{1.0 / 15.0};
-  for (const auto& limits_under_test : {limits, ptz_limits{}, ptz_limits::from(static_camera())})
+  for (const auto& limits_under_test :
+       {limits, ptz_limits{}, ptz_limits::from(test_support::static_camera())})
     for (const ptz_state& start : {ptz_state{0.0, -20.0, 45.0}, ptz_state{175.0, -70.0, 10.0},
                                    ptz_state{30.0, -25.0, 40.0}}) {
       ptz_camera head(limits_under_test, start);

@@ -4,6 +4,8 @@
 
 #include <cmath>
 
+#include "tests/vision/static_camera.hpp"
+
 namespace argus::vision {
 namespace {
 
@@ -108,11 +110,7 @@ TEST(ptz_camera, full_turn_pan_takes_the_shorter_way_round) {
 }
 
 TEST(ptz_camera, static_cameras_never_move) {
-  config::camera_settings settings;
-  settings.type = config::camera_type::static_camera;
-  settings.pan_deg = 30.0;
-  settings.tilt_deg = -25.0;
-  settings.field_of_view_deg = 50.0;
+  auto settings = test_support::static_camera(50.0);
   auto camera = ptz_camera::from(settings);
   camera.command({-60.0, -10.0, 20.0});
   camera.step(std::chrono::duration<double>{10.0});

@@ -4,6 +4,8 @@
 
 #include <cmath>
 
+#include "tests/vision/static_camera.hpp"
+
 namespace argus::vision {
 namespace {
 
@@ -56,12 +58,7 @@ TEST(relevance, spreads_come_from_controller_settings) {
 
 TEST(relevance, a_static_camera_is_judged_from_its_fixed_pose) {
   // Its limits collapse onto its pose (pan 30, tilt -25, fov 40): the hat values of eq. (1).
-  config::camera_settings c;
-  c.type = config::camera_type::static_camera;
-  c.pan_deg = 30.0;
-  c.tilt_deg = -25.0;
-  c.field_of_view_deg = 40.0;
-  const auto limits = ptz_limits::from(c);
+  const auto limits = ptz_limits::from(test_support::static_camera());
   config::controller_settings controller;
   EXPECT_DOUBLE_EQ(relevance({30.0, -25.0, 40.0}, limits, controller, camera_availability::free),
                    1.0);

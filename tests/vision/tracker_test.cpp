@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "opencv2/imgproc.hpp"
+#include "tests/vision/static_camera.hpp"
 
 namespace argus::vision {
 namespace {
@@ -150,15 +151,10 @@ TEST(tracking_fsm, track_fixates_on_the_box) {
 }
 
 TEST(tracking_fsm, a_static_camera_holds_its_pose_in_every_state) {
-  config::camera_settings camera;
-  camera.type = config::camera_type::static_camera;
-  camera.pan_deg = 30.0;
-  camera.tilt_deg = -25.0;
-  camera.field_of_view_deg = 40.0;
   config::controller_settings controller;
   controller.wait_timeout = config::seconds{1.0};
   controller.search_timeout = config::seconds{20.0};
-  tracking_fsm fsm(ptz_limits::from(camera), controller);
+  tracking_fsm fsm(ptz_limits::from(test_support::static_camera()), controller);
   const ptz_state fixed{30.0, -25.0, 40.0};
   const config::seconds dt{1.0 / 15.0};
   EXPECT_EQ(fsm.step({true, cv::Rect(300, 10, 4, 12), 0.9}, fixed, {320, 240}, dt).pose, fixed);
