@@ -134,10 +134,10 @@ void take_queries(camera_node_state& st, const world::snapshot* snap, const cv::
     if (snap != nullptr && st.world)
       box = sensing::operator_box(*snap, *st.world->station, view_of(st), q.request.pedestrian);
     if (!box || (st.pixels && image.empty())) {
-      st.ctx->emit("task_refused",
-                   fmt::format(R"("camera":{},"task":{},"pedestrian":{},"reason":"{}")",
-                               st.camera_id, q.task, q.request.pedestrian,
-                               !box ? "not_in_view" : "no_frame"));
+      st.ctx->emit(
+          "task_refused",
+          fmt::format(R"("camera":{},"task":{},"pedestrian":{},"reason":"{}")", st.camera_id,
+                      q.task, q.request.pedestrian, !box ? "not_in_view" : "no_frame"));
       continue;
     }
     controller::operator_query query;
@@ -216,14 +216,13 @@ void take_turn(node_actor* self, std::int64_t tick, std::uint8_t p, const caf::a
       st.input.messages.push_back({m.origin, std::move(*decoded)});
       continue;
     }
-    // A liveness probe any node may send.
-    if (m.kind == "ping") {
-      st.network->reply(m, "pong", {});
-    } else if (m.kind != "pong") {
+    if (protocol::is_group_kind(m.kind.name())) {
       ctx.emit("bad_message", fmt::format(R"("camera":{},"origin":{},"message":"{}","bytes":{})",
                                           st.camera_id, m.origin, m.kind, m.body.size()));
       continue;
     }
+    // Anything else is the operator's or a test's: logged; a liveness probe is answered.
+    if (m.kind == "ping") st.network->reply(m, "pong", {});
     ctx.emit("net_received", fmt::format(R"("camera":{},"origin":{},"message":"{}","hops":{})",
                                          st.camera_id, m.origin, m.kind, m.hops));
   }
@@ -314,8 +313,8 @@ caf::behavior camera_node(node_actor* self, const config::scenario& scenario,
   for (std::size_t i = 0; i < scenario.tasks.size(); ++i) {
     const auto& t = scenario.tasks[i];
     if (t.camera != camera.id) continue;
-    st.tasks.push_back({config::to_ticks(t.at, scenario.run.tick),
-                        static_cast<protocol::task_id>(i), t});
+    st.tasks.push_back(
+        {config::to_ticks(t.at, scenario.run.tick), static_cast<protocol::task_id>(i), t});
   }
   std::stable_sort(st.tasks.begin(), st.tasks.end(),
                    [](const auto& a, const auto& b) { return a.tick < b.tick; });
@@ -345,7 +344,8 @@ caf::behavior camera_node(node_actor* self, const config::scenario& scenario,
       },
   };
   st.idle = state_behaviour(self, controller::node_state::idle, shared);
-  st.computing_relevance = state_behaviour(self, controller::node_state::computing_relevance, shared);
+  st.computing_relevance =
+      state_behaviour(self, controller::node_state::computing_relevance, shared);
   st.performing_task = state_behaviour(self, controller::node_state::performing_task, shared);
   return st.idle;
 }

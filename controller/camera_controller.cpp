@@ -108,9 +108,9 @@ double camera_controller::relevance(std::int64_t now) const {
 
 double camera_controller::relevance_of(const cv::Rect2d& box, bool busy) const {
   const auto required = vision::centring_pose(pose_, box, me_.frame);
-  return vision::relevance(required, me_.limits, settings_,
-                           busy ? vision::camera_availability::busy
-                                : vision::camera_availability::free);
+  return vision::relevance(
+      required, me_.limits, settings_,
+      busy ? vision::camera_availability::busy : vision::camera_availability::free);
 }
 
 bool camera_controller::locked() const {
@@ -194,8 +194,8 @@ void camera_controller::take_query(const operator_query& q, controller_output& o
   start_task(q.task, group_role::leader, me_.id, 0.0, now_, out);
   seen_relevance_ = relevance_of(q.box, false);
   emit(out, "task_created",
-       fmt::format(R"("task":{},"min_cameras":{},"max_cameras":{},"relevance":{:.4f})",
-                   q.task.task, q.task.min_cameras, q.task.max_cameras, seen_relevance_));
+       fmt::format(R"("task":{},"min_cameras":{},"max_cameras":{},"relevance":{:.4f})", q.task.task,
+                   q.task.min_cameras, q.task.max_cameras, seen_relevance_));
 }
 
 // --- messages --------------------------------------------------------------------------------
@@ -261,8 +261,9 @@ void camera_controller::on_query(int from, const protocol::query_relevance& q,
   p.look_until = now_ + ticks(settings_.relevance_look_time);
   p.give_up_at = now_ + ticks(settings_.bidding_timeout);
   pending_.push_back(std::move(p));
-  emit(out, "queried",
-       fmt::format(R"("task":{},"leader":{},"auction":{},"from":{})", t, q.leader, q.auction, from));
+  emit(
+      out, "queried",
+      fmt::format(R"("task":{},"leader":{},"auction":{},"from":{})", t, q.leader, q.auction, from));
 }
 
 void camera_controller::on_bid(const protocol::relevance_bid& b, controller_output& out) {
@@ -280,8 +281,9 @@ void camera_controller::on_join(const protocol::join& j, controller_output& out)
   if (task_) {
     if (task_->task == j.task.task) return;
     if (!j.reassign) {
-      emit(out, "join_refused", fmt::format(R"("task":{},"leader":{},"busy_with":{})",
-                                            j.task.task, j.leader, task_->task));
+      emit(out, "join_refused",
+           fmt::format(R"("task":{},"leader":{},"busy_with":{})", j.task.task, j.leader,
+                       task_->task));
       return;
     }
     leave_task("reassigned", out);
@@ -295,8 +297,8 @@ void camera_controller::on_join(const protocol::join& j, controller_output& out)
   }
   pending_.clear();
   start_task(j.task, group_role::member, j.leader, r, seen, out);
-  emit(out, "joined", fmt::format(R"("task":{},"leader":{},"reassign":{})", j.task.task, j.leader,
-                                  j.reassign));
+  emit(out, "joined",
+       fmt::format(R"("task":{},"leader":{},"reassign":{})", j.task.task, j.leader, j.reassign));
   send(protocol::broadcast, own_status(), out);
 }
 
@@ -321,8 +323,8 @@ void camera_controller::on_status(const protocol::status& s, controller_output& 
       it->second.last_status = now_;
     } else {
       // Section IV-A: "the leader node includes that node into its group".
-      emit(out, "member_added", fmt::format(R"("task":{},"member":{},"reason":"status")",
-                                            s.task, s.sender));
+      emit(out, "member_added",
+           fmt::format(R"("task":{},"member":{},"reason":"status")", s.task, s.sender));
     }
     return;
   }
@@ -414,12 +416,12 @@ void camera_controller::become_leader(std::string_view reason, controller_output
   csp_.reset();
   negotiator_.reset();
   next_auction_at_ = now_;
-  emit(out, "leader_changed", fmt::format(R"("task":{},"leader":{},"previous":{},"reason":"{}")",
-                                          task_->task, me_.id, previous, reason));
+  emit(out, "leader_changed",
+       fmt::format(R"("task":{},"leader":{},"previous":{},"reason":"{}")", task_->task, me_.id,
+                   previous, reason));
 }
 
-void camera_controller::follow_leader(int leader, std::string_view reason,
-                                      controller_output& out) {
+void camera_controller::follow_leader(int leader, std::string_view reason, controller_output& out) {
   const int previous = leader_;
   role_ = group_role::member;
   leader_ = leader;
@@ -428,8 +430,9 @@ void camera_controller::follow_leader(int leader, std::string_view reason,
   auction_.reset();
   csp_.reset();
   negotiator_.reset();
-  emit(out, "leader_changed", fmt::format(R"("task":{},"leader":{},"previous":{},"reason":"{}")",
-                                          task_->task, leader, previous, reason));
+  emit(out, "leader_changed",
+       fmt::format(R"("task":{},"leader":{},"previous":{},"reason":"{}")", task_->task, leader,
+                   previous, reason));
   // At once, so that the new leader counts this node (and this node's members follow).
   send(protocol::broadcast, own_status(), out);
 }
@@ -512,8 +515,9 @@ void camera_controller::lead(controller_output& out) {
   // Drop members that went silent or whose relevance decayed below the membership threshold.
   for (auto it = members_.begin(); it != members_.end();) {
     const auto age = now_ - it->second.last_status;
-    const double decayed = it->second.relevance *
-                           std::max(0.0, 1.0 - static_cast<double>(age) / static_cast<double>(silence));
+    const double decayed =
+        it->second.relevance *
+        std::max(0.0, 1.0 - static_cast<double>(age) / static_cast<double>(silence));
     const bool settled = now_ - it->second.joined > silence;
     const char* why = age >= silence ? "silent"
                       : settled && decayed < settings_.membership_relevance_threshold
@@ -664,8 +668,9 @@ void camera_controller::start_csp(std::vector<protocol::relevance_bid> contended
   }
   std::vector<int> cameras;
   for (const auto& b : contended) cameras.push_back(b.bidder);
-  emit(out, "conflict", fmt::format(R"("task":{},"with_tasks":[{}],"cameras":[{}])", task_->task,
-                                    fmt::join(tasks, ","), fmt::join(cameras, ",")));
+  emit(out, "conflict",
+       fmt::format(R"("task":{},"with_tasks":[{}],"cameras":[{}])", task_->task,
+                   fmt::join(tasks, ","), fmt::join(cameras, ",")));
   round.bids = std::move(contended);
   csp_ = std::move(round);
 }
@@ -728,7 +733,9 @@ void camera_controller::on_csp_result(const protocol::csp_result& r, controller_
 }
 
 void camera_controller::apply_assignment(const std::vector<int>& cameras, controller_output& out) {
-  auto assigned = [&](int c) { return std::find(cameras.begin(), cameras.end(), c) != cameras.end(); };
+  auto assigned = [&](int c) {
+    return std::find(cameras.begin(), cameras.end(), c) != cameras.end();
+  };
   for (auto it = members_.begin(); it != members_.end();) {
     if (assigned(it->first)) {
       ++it;

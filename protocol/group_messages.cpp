@@ -151,7 +151,9 @@ void write(writer& w, const join& m) {
   w.put(m.leader);
   w.put(m.reassign);
 }
-bool read(reader& r, join& m) { return r.get(m.task) && r.get(m.leader) && r.get(m.reassign); }
+bool read(reader& r, join& m) {
+  return r.get(m.task) && r.get(m.leader) && r.get(m.reassign);
+}
 
 void write(writer& w, const status& m) {
   w.put(m.task);
@@ -263,6 +265,14 @@ std::string_view kind_of(const group_message& m) {
   return std::visit(namer{}, m);
 }
 
+bool is_group_kind(std::string_view kind) {
+  for (std::string_view k :
+       {"queryrelevance", "relevance", "join", "status", "handover", "demote", "demoteack",
+        "demotenack", "demoteretry", "cspquery", "cspdata", "cspresult"})
+    if (kind == k) return true;
+  return false;
+}
+
 std::string encode(const group_message& m) {
   writer w;
   std::visit([&w](const auto& x) { write(w, x); }, m);
@@ -278,8 +288,8 @@ std::optional<group_message> decode(std::string_view kind, std::string_view body
   if (kind == "cspquery") return read_whole<csp_query>(body);
   if (kind == "cspdata") return read_whole<csp_data>(body);
   if (kind == "cspresult") return read_whole<csp_result>(body);
-  for (auto step : {demotion_step::demote, demotion_step::ack, demotion_step::nack,
-                    demotion_step::retry}) {
+  for (auto step :
+       {demotion_step::demote, demotion_step::ack, demotion_step::nack, demotion_step::retry}) {
     if (kind != demotion_kind(step)) continue;
     auto m = read_whole<demotion>(body);
     if (m) std::get<demotion>(*m).step = step;

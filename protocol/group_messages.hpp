@@ -150,13 +150,16 @@ struct csp_result {
 };
 
 /// Any message of the protocol.
-using group_message = std::variant<query_relevance, relevance_bid, join, status, handover,
-                                   demotion, csp_query, csp_data, csp_result>;
+using group_message = std::variant<query_relevance, relevance_bid, join, status, handover, demotion,
+                                   csp_query, csp_data, csp_result>;
 
 /// The kind a message travels as: the paper's names ("queryrelevance", "relevance", "join",
 /// "status", "demote", "demoteack", "demotenack", "demoteretry"), and ours for what it leaves
 /// unnamed ("handover", "cspquery", "cspdata", "cspresult").
 std::string_view kind_of(const group_message& m);
+
+/// Whether `kind` names one of the protocol's messages.
+bool is_group_kind(std::string_view kind);
 
 /// The body bytes of `m`.
 std::string encode(const group_message& m);

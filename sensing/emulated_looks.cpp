@@ -54,8 +54,8 @@ std::vector<controller::look_result> emulated_looks::look(
   return out;
 }
 
-protocol::signature emulated_looks::acquire(controller::task_id task,
-                                            const world::snapshot& frame, int id) {
+protocol::signature emulated_looks::acquire(controller::task_id task, const world::snapshot& frame,
+                                            int id) {
   following_[task] = id;
   return to_signature(vision::appearance_signature(frame.find(id)->look));
 }

@@ -12,7 +12,8 @@ std::vector<controller::look_result> pixel_sensor::look(
   std::vector<controller::look_result> out;
   for (const auto& l : looks) {
     auto it = trackers_.find(l.task);
-    if (it == trackers_.end()) it = trackers_.emplace(l.task, vision::tracker(to_histogram(l.target))).first;
+    if (it == trackers_.end())
+      it = trackers_.emplace(l.task, vision::tracker(to_histogram(l.target))).first;
     const auto seen = it->second.update(bgr);
     out.push_back({l.task, seen.found, cv::Rect2d(seen.box), seen.score});
     kept.insert(trackers_.extract(it));

@@ -13,7 +13,9 @@ using protocol::demotion_step;
 using step_list = std::vector<std::pair<int, demotion_step>>;
 
 // No back-off (interval 0), so a demote scheduled at tick t goes out at tick t.
-demotion_negotiator immediate() { return demotion_negotiator(1000, 0, 1); }
+demotion_negotiator immediate() {
+  return demotion_negotiator(1000, 0, 1);
+}
 
 TEST(demotion_negotiator, case_1_meeting_a_leader_sends_demote_after_the_interval) {
   demotion_negotiator n(1000, 10, 42);

@@ -34,11 +34,15 @@ inline config::camera_settings test_camera(int id) {
 }
 
 /// A box the camera of test_camera() scores about 1 for (centred, half the frame high).
-inline cv::Rect2d centred_box() { return {150.0, 60.0, 20.0, 120.0}; }
+inline cv::Rect2d centred_box() {
+  return {150.0, 60.0, 20.0, 120.0};
+}
 
 /// A box it scores lower for: off-centre and small (the pose that centres it is far from
 /// the middle of the camera's ranges).
-inline cv::Rect2d poor_box() { return {280.0, 30.0, 6.0, 40.0}; }
+inline cv::Rect2d poor_box() {
+  return {280.0, 30.0, 6.0, 40.0};
+}
 
 /// A scenario with `ids` cameras, ticks of 1/10 s and eq. (1) spreads wide enough that
 /// relevance varies smoothly over the test boxes.
