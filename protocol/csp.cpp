@@ -4,6 +4,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "config/scenario.hpp"
 #include "fmt/format.h"
 #include "protocol/csp_search.hpp"
 
@@ -69,6 +70,18 @@ csp_search::outcome search(const csp_search::round_problem& round, csp_solver_ki
 }
 
 }  // namespace
+
+csp_solver_kind solver_kind_of(config::conflict_solver solver) {
+  switch (solver) {
+    case config::conflict_solver::all_solv:
+      return csp_solver_kind::all_solv;
+    case config::conflict_solver::best_solv:
+      return csp_solver_kind::best_solv;
+    case config::conflict_solver::bound_solv:
+      return csp_solver_kind::bound_solv;
+  }
+  throw std::invalid_argument("csp: unknown conflict_solver");
+}
 
 csp_solution solve(const csp_problem& problem, csp_solver_kind solver) {
   validate(problem);

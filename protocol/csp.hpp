@@ -74,10 +74,15 @@
 #include <cstdint>
 #include <vector>
 
+#include "config/fwd.hpp"
+
 namespace argus::protocol {
 
 /// Which search settles the conflict: the paper's AllSolv and BestSolv, or bound_solv.
 enum class csp_solver_kind { all_solv, best_solv, bound_solv };
+
+/// The solver a scenario's `controller.solver` names.
+csp_solver_kind solver_kind_of(config::conflict_solver solver);
 
 /// One group (variable). relevance[i] is camera i's relevance to this group's task; a camera
 /// with relevance < problem.threshold (or NaN), or beyond the end of the vector, is not in the

@@ -8,6 +8,7 @@
 #include <random>
 #include <stdexcept>
 
+#include "config/scenario.hpp"
 #include "protocol/csp_table1.hpp"
 
 namespace argus::protocol {
@@ -383,6 +384,14 @@ TEST(csp, bound_solv_never_lists_a_huge_domain) {
   EXPECT_EQ(solution.assignment[0].front(), 29u) << "the lexicographically smallest optimum";
   EXPECT_EQ(solution.assignment[1], (std::vector<std::size_t>{59}));
   EXPECT_LT(solution.nodes_explored, 100u);
+}
+
+TEST(csp, a_scenarios_solver_names_its_kind) {
+  EXPECT_EQ(solver_kind_of(config::conflict_solver::all_solv), csp_solver_kind::all_solv);
+  EXPECT_EQ(solver_kind_of(config::conflict_solver::best_solv), csp_solver_kind::best_solv);
+  EXPECT_EQ(solver_kind_of(config::conflict_solver::bound_solv), csp_solver_kind::bound_solv);
+  EXPECT_EQ(solver_kind_of(config::controller_settings{}.solver), csp_solver_kind::best_solv)
+      << "the paper's BestSolv is the default";
 }
 
 TEST(csp, rejects_malformed_problems) {
