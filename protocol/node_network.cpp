@@ -1,8 +1,9 @@
 #include "protocol/node_network.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <utility>
+
+#include "config/ticks.hpp"
 
 namespace argus::protocol {
 namespace {
@@ -13,14 +14,13 @@ message_kind hello_kind() {
   return kind;
 }
 
-std::int64_t ticks_of(config::seconds d, config::seconds tick) {
-  return std::max<std::int64_t>(1, static_cast<std::int64_t>(std::llround(d / tick)));
-}
-
 // The last tick at which an answer is still within `d` of the request: an answer read
 // later has taken longer than `d`, so the peer is declared failed on the first such tick.
+// Rounded down, not to the nearest tick: rounding up would wait past `d` for an answer that
+// is already late (1500 ms at 1/15 s is 22.5 ticks: 22, not 23). At least 1: an answer needs
+// a tick to travel.
 std::int64_t last_tick_within(config::seconds d, config::seconds tick) {
-  return std::max<std::int64_t>(1, static_cast<std::int64_t>(std::floor(d / tick + 1e-9)));
+  return std::max<std::int64_t>(1, config::ticks_within(d, tick));
 }
 
 }  // namespace
@@ -30,8 +30,9 @@ node_network::node_network(int self, std::vector<int> attached, const config::sc
       attached_(std::move(attached)),
       router_(self),
       max_hops_(static_cast<std::uint8_t>(std::min(255u, s.network.max_hops))),
-      heartbeat_ticks_(ticks_of(s.controller.heartbeat_interval, s.run.tick)),
-      silence_ticks_(ticks_of(s.controller.member_failure_timeout, s.run.tick)),
+      heartbeat_ticks_(config::to_ticks_at_least_one(s.controller.heartbeat_interval, s.run.tick)),
+      silence_ticks_(
+          config::to_ticks_at_least_one(s.controller.member_failure_timeout, s.run.tick)),
       timeout_ticks_(last_tick_within(s.network.message_timeout, s.run.tick)) {
   std::sort(attached_.begin(), attached_.end());
 }
