@@ -8,7 +8,7 @@
 namespace argus::protocol {
 namespace {
 
-// Interned once: beacons go out every heartbeat from every node.
+// Interned once: beacons go out every hello interval from every node.
 message_kind hello_kind() {
   static const message_kind kind{"hello"};
   return kind;
@@ -30,9 +30,8 @@ node_network::node_network(int self, std::vector<int> attached, const config::sc
       attached_(std::move(attached)),
       router_(self),
       max_hops_(static_cast<std::uint8_t>(std::min(255u, s.network.max_hops))),
-      heartbeat_ticks_(config::to_ticks_at_least_one(s.controller.heartbeat_interval, s.run.tick)),
-      silence_ticks_(
-          config::to_ticks_at_least_one(s.controller.member_failure_timeout, s.run.tick)),
+      hello_ticks_(config::to_ticks_at_least_one(s.network.hello_interval, s.run.tick)),
+      silence_ticks_(config::to_ticks_at_least_one(s.network.neighbour_timeout, s.run.tick)),
       timeout_ticks_(last_tick_within(s.network.message_timeout, s.run.tick)) {
   std::sort(attached_.begin(), attached_.end());
 }
@@ -86,7 +85,7 @@ void node_network::tick(std::int64_t tick) {
   }
   if (lost_any) refresh_live();
   // Beacons are spread over the interval by node id, so nodes do not all speak at once.
-  if ((tick + self_) % heartbeat_ticks_ == 0) {
+  if ((tick + self_) % hello_ticks_ == 0) {
     net_message hello;
     hello.id = make_message_id(self_, next_seq_++);
     hello.origin = self_;
