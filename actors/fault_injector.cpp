@@ -14,6 +14,7 @@
 #include "actors/type_ids.hpp"
 #include "config/derive_seed.hpp"
 #include "config/enum_names.hpp"
+#include "config/ticks.hpp"
 #include "fmt/format.h"
 
 namespace argus::actors {
@@ -48,10 +49,6 @@ struct injector_state {
 };
 
 using injector = caf::stateful_actor<injector_state>;
-
-std::int64_t to_tick(config::seconds at, config::seconds tick) {
-  return static_cast<std::int64_t>(std::llround(at / tick));
-}
 
 void tell_links(injector* self, int camera, const link_command& cmd) {
   auto& st = self->state;
@@ -157,7 +154,7 @@ void perform(injector* self, tick_context& ctx, const planned& p) {
     case config::fault_kind::loss_burst:
       cmd.op = link_op::loss_burst;
       cmd.loss_probability = f.loss_probability;
-      cmd.until_tick = ctx.tick() + to_tick(f.length, st.scenario.run.tick);
+      cmd.until_tick = ctx.tick() + config::to_ticks(f.length, st.scenario.run.tick);
       tell_links(self, f.camera, cmd);
       break;
   }
@@ -183,9 +180,9 @@ std::vector<planned> make_plan(const config::scenario& s) {
   std::vector<planned> out;
   for (std::size_t i = 0; i < s.faults.size(); ++i) {
     const auto& f = s.faults[i];
-    out.push_back({to_tick(f.at, s.run.tick), i, false});
+    out.push_back({config::to_ticks(f.at, s.run.tick), i, false});
     if (f.kind == config::fault_kind::crash_and_recover)
-      out.push_back({to_tick(f.at + f.length, s.run.tick), i, true});
+      out.push_back({config::to_ticks(f.at + f.length, s.run.tick), i, true});
   }
   std::stable_sort(out.begin(), out.end(),
                    [](const planned& a, const planned& b) { return a.tick < b.tick; });

@@ -1,6 +1,6 @@
 #include "actors/run_scenario.hpp"
 
-#include <cmath>
+#include <algorithm>
 #include <map>
 #include <stdexcept>
 #include <thread>
@@ -17,6 +17,7 @@
 #include "actors/type_ids.hpp"
 #include "actors/video_recorder.hpp"
 #include "actors/world_coordinator.hpp"
+#include "config/ticks.hpp"
 #include "protocol/topology.hpp"
 #include "world/layout_loader.hpp"
 
@@ -52,8 +53,7 @@ run_outcome run_scenario(const config::scenario& scenario, const run_options& op
 
   // The station, the render pool and the video file first: when one of them fails, no other
   // actor is running yet that the actor system would wait for.
-  const auto end_tick =
-      static_cast<std::int64_t>(std::llround(scenario.run.duration / scenario.run.tick));
+  const auto end_tick = config::to_ticks(scenario.run.duration, scenario.run.tick);
   caf::actor video_participant;
   world_run_settings world_settings;
   world_settings.station = world::station::load(world::layout_path(scenario));

@@ -1,11 +1,12 @@
 #include "actors/scenario_script.hpp"
 
-#include <cmath>
+#include <algorithm>
 #include <vector>
 
 #include "actors/participant_ids.hpp"
 #include "actors/tick_context.hpp"
 #include "actors/type_ids.hpp"
+#include "config/ticks.hpp"
 #include "fmt/format.h"
 
 namespace argus::actors {
@@ -24,7 +25,7 @@ caf::behavior scenario_script(caf::stateful_actor<script_state>* self, config::s
   auto& st = self->state;
   st.info = script_participant();
   for (std::size_t i = 0; i < scenario.tasks.size(); ++i)
-    st.tasks.emplace_back(std::llround(scenario.tasks[i].at / scenario.run.tick), i);
+    st.tasks.emplace_back(config::to_ticks(scenario.tasks[i].at, scenario.run.tick), i);
   std::stable_sort(st.tasks.begin(), st.tasks.end(),
                    [](const auto& a, const auto& b) { return a.first < b.first; });
   st.scenario = std::move(scenario);

@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <charconv>
-#include <cmath>
 #include <iostream>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
@@ -17,6 +16,7 @@
 #include "config/duration.hpp"
 #include "config/scenario_error.hpp"
 #include "config/scenario_loader.hpp"
+#include "config/ticks.hpp"
 #include "fmt/format.h"
 #include "vision/feed_mosaic.hpp"
 #include "vision/imaging_model.hpp"
@@ -72,7 +72,7 @@ int feeds(const feeds_arguments& args) {
   }
   try {
     const double tick_s = scenario.run.tick.count();
-    const auto ticks = static_cast<std::int64_t>(std::llround(*time_s / tick_s));
+    const auto ticks = config::to_ticks(config::seconds{*time_s}, scenario.run.tick);
     world::crowd crowd(station, world::crowd_settings::from(scenario));
     for (std::int64_t k = 0; k < ticks; ++k) crowd.step();
     const double t = static_cast<double>(ticks) * tick_s;

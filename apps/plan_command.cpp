@@ -1,7 +1,6 @@
 // `argus plan`: the station's plan view (paper Fig. 1) at a moment of a scenario's crowd.
 
 #include <charconv>
-#include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <optional>
@@ -13,6 +12,7 @@
 #include "config/duration.hpp"
 #include "config/scenario_error.hpp"
 #include "config/scenario_loader.hpp"
+#include "config/ticks.hpp"
 #include "fmt/format.h"
 #include "world/crowd.hpp"
 #include "world/layout_loader.hpp"
@@ -58,7 +58,7 @@ int plan(const plan_arguments& args) {
     return bad_input;
   }
   const double tick_s = scenario.run.tick.count();
-  const auto ticks = static_cast<std::int64_t>(std::llround(*time_s / tick_s));
+  const auto ticks = config::to_ticks(config::seconds{*time_s}, scenario.run.tick);
   try {
     world::crowd crowd(station, world::crowd_settings::from(scenario));
     world::trail_recorder trails(std::chrono::duration<double>{*trails_s});

@@ -12,6 +12,7 @@
 #include "config/duration.hpp"
 #include "config/scenario_error.hpp"
 #include "config/scenario_loader.hpp"
+#include "config/ticks.hpp"
 #include "fmt/format.h"
 #include "nlohmann/json.hpp"
 #include "opencv2/imgcodecs.hpp"
@@ -113,7 +114,7 @@ int calibrate(const calibrate_arguments& args) {
   try {
     const double tick_s = scenario.run.tick.count();
     const auto ticks_of = [&](double s) {
-      return static_cast<std::int64_t>(std::llround(s / tick_s));
+      return config::to_ticks(config::seconds{s}, scenario.run.tick);
     };
     const std::int64_t first = ticks_of(*start_s);
     const std::int64_t last = first + ticks_of(*duration_s);

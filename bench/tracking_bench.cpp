@@ -39,6 +39,7 @@
 #include <vector>
 
 #include "config/scenario_loader.hpp"
+#include "config/ticks.hpp"
 #include "fmt/format.h"
 #include "vision/color_histogram.hpp"
 #include "vision/emulated_sensor.hpp"
@@ -258,7 +259,7 @@ cell_result run_cell(const config::scenario& scenario, std::shared_ptr<const wor
         f.fsm.emplace(vision::ptz_limits::from(*f.camera), scenario.controller);
       }
   }
-  const int ticks = static_cast<int>(std::lround(seconds / tick_s));
+  const auto ticks = config::to_ticks(config::seconds{seconds}, config::seconds{tick_s});
   for (int tick = 1; tick <= ticks; ++tick) {
     crowd.step();
     const auto& frame = *crowd.current();

@@ -127,6 +127,11 @@ struct network_settings {
   std::vector<std::array<int, 2>> adjacency;
   double duplicate_probability = 0.0;
   bool reorder = false;
+  /// Every node sends a one-hop `hello` beacon to its neighbours this often.
+  seconds hello_interval{1.0};
+  /// A neighbour not heard for this long (beacons or any message) is given up; longer than
+  /// `hello_interval`.
+  seconds neighbour_timeout{5.0};
   friend bool operator==(const network_settings&, const network_settings&) = default;
 };
 

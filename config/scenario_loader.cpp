@@ -47,7 +47,7 @@ constexpr std::array<std::string_view, 8> color_response_keys{
     "enabled", "hue_offset_deg", "saturation_gain", "value_gain", "value_offset", "tint",
     "tone",    "shade"};
 constexpr std::array<std::string_view, 2> dropout_keys{"fraction", "kind"};
-constexpr std::array<std::string_view, 10> network_keys{"loss_probability",
+constexpr std::array<std::string_view, 12> network_keys{"loss_probability",
                                                         "min_delay",
                                                         "max_delay",
                                                         "node_failure_probability",
@@ -56,8 +56,15 @@ constexpr std::array<std::string_view, 10> network_keys{"loss_probability",
                                                         "communication_range_m",
                                                         "adjacency",
                                                         "duplicate_probability",
+<<<<<<< HEAD
                                                         "reorder"};
 constexpr std::array<std::string_view, 20> controller_keys{"wait_timeout",
+=======
+                                                        "reorder",
+                                                        "hello_interval",
+                                                        "neighbour_timeout"};
+constexpr std::array<std::string_view, 15> controller_keys{"wait_timeout",
+>>>>>>> motion
                                                            "search_timeout",
                                                            "min_relevance",
                                                            "heartbeat_interval",
@@ -307,6 +314,16 @@ class scenario_parser {
     }
     network.read("duplicate_probability", out.duplicate_probability, probability);
     network.read("reorder", out.reorder);
+    const bool hello_valid = !network.find("hello_interval") ||
+                             network.read("hello_interval", out.hello_interval, positive);
+    if (hello_valid) {
+      const auto after_hello = value_bounds::above(out.hello_interval.count());
+      const auto note = "longer than hello_interval";
+      network.read("neighbour_timeout", out.neighbour_timeout, after_hello, note);
+      network.check_default("neighbour_timeout", out.neighbour_timeout, after_hello, note);
+    } else {
+      network.read("neighbour_timeout", out.neighbour_timeout, positive);
+    }
   }
 
   void read_adjacency(const YAML::Node& node, const std::string& path,

@@ -189,6 +189,8 @@ std::string to_yaml(const scenario& s) {
   out.entry(1, "adjacency", adjacency(network.adjacency));
   out.entry(1, "duplicate_probability", number(network.duplicate_probability));
   out.entry(1, "reorder", boolean(network.reorder));
+  out.entry(1, "hello_interval", duration(network.hello_interval));
+  out.entry(1, "neighbour_timeout", duration(network.neighbour_timeout));
 
   const auto& controller = s.controller;
   out.line(0, "controller:");

@@ -6,14 +6,23 @@
 namespace argus::config {
 
 std::int64_t to_ticks(seconds duration, seconds tick) {
-  // A relative tolerance keeps 1500 ms at 1/15 s (22.5 ticks) from rounding either way by
-  // floating-point error.
-  const double ticks = duration / tick;
-  return static_cast<std::int64_t>(std::floor(ticks + 0.5 + 1e-9 * std::abs(ticks)));
+  return static_cast<std::int64_t>(std::floor(duration / tick + 0.5 + tick_tolerance));
 }
 
 std::int64_t to_ticks_at_least_one(seconds duration, seconds tick) {
   return std::max<std::int64_t>(1, to_ticks(duration, tick));
+}
+
+std::int64_t ticks_covering(seconds duration, seconds tick) {
+  return static_cast<std::int64_t>(std::ceil(duration / tick - tick_tolerance));
+}
+
+std::int64_t ticks_within(seconds duration, seconds tick) {
+  return static_cast<std::int64_t>(std::floor(duration / tick + tick_tolerance));
+}
+
+seconds to_seconds(std::int64_t ticks, seconds tick) {
+  return static_cast<double>(ticks) * tick;
 }
 
 }  // namespace argus::config

@@ -1,7 +1,8 @@
 #include "protocol/link_model.hpp"
 
 #include <algorithm>
-#include <cmath>
+
+#include "config/ticks.hpp"
 
 namespace argus::protocol {
 
@@ -12,15 +13,25 @@ link_model::link_model(const config::network_settings& network, double tick_seco
       max_delay_s_(network.max_delay.count()),
       tick_s_(tick_seconds),
       lowest_ticks_(min_delay_ticks(network, tick_seconds)),
-      highest_ticks_(std::max(
-          lowest_ticks_, static_cast<std::int64_t>(std::floor(max_delay_s_ / tick_s_ + 1e-9)))) {}
+      highest_ticks_(max_delay_ticks(network, tick_seconds, lowest_ticks_)) {}
 
 std::int64_t link_model::min_delay_ticks(const config::network_settings& network,
                                          double tick_seconds) {
-  // 1e-9 absorbs binary fractions such as 0.2 / (1/15) = 3.0000000000000004.
-  auto lowest =
-      static_cast<std::int64_t>(std::ceil(network.min_delay.count() / tick_seconds - 1e-9));
-  return std::max<std::int64_t>(1, lowest);
+  // Rounded up, not to the nearest tick: this is the lookahead, so it must never exceed the
+  // smallest delay a message actually gets, and a message is never delivered earlier than
+  // min_delay (200 ms at 1/15 s: 3 ticks; 210 ms: 4). At least 1: delivery is on a later
+  // tick.
+  return std::max<std::int64_t>(
+      1, config::ticks_covering(network.min_delay, config::seconds{tick_seconds}));
+}
+
+std::int64_t link_model::max_delay_ticks(const config::network_settings& network,
+                                         double tick_seconds, std::int64_t lowest_ticks) {
+  // Rounded down, not to the nearest tick: a message is never delivered later than max_delay
+  // (500 ms at 1/15 s: 7 ticks, not 8); never below the lowest, when both bounds fall between
+  // the same two ticks.
+  return std::max(lowest_ticks,
+                  config::ticks_within(network.max_delay, config::seconds{tick_seconds}));
 }
 
 std::int64_t link_model::draw_delay_ticks(pcg64& rng) const {
@@ -29,7 +40,7 @@ std::int64_t link_model::draw_delay_ticks(pcg64& rng) const {
     delay = std::uniform_real_distribution<double>(min_delay_s_, max_delay_s_)(rng);
   // Delivered on the nearest tick boundary (unbiased on average), kept within the bounds:
   // never earlier than min_delay, never later than max_delay.
-  auto ticks = static_cast<std::int64_t>(std::llround(delay / tick_s_));
+  const auto ticks = config::to_ticks(config::seconds{delay}, config::seconds{tick_s_});
   return std::clamp(ticks, lowest_ticks_, highest_ticks_);  // lowest_ticks_ >= 1
 }
 

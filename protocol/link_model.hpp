@@ -47,6 +47,10 @@ class link_model {
   double loss() const noexcept { return loss_; }
 
  private:
+  // The most ticks any message spends on a link of this network (never below
+  // `lowest_ticks`, the min_delay_ticks()).
+  static std::int64_t max_delay_ticks(const config::network_settings& network, double tick_seconds,
+                                      std::int64_t lowest_ticks);
   std::int64_t draw_delay_ticks(pcg64& rng) const;
 
   double loss_;

@@ -1,26 +1,26 @@
 #include "protocol/node_network.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <utility>
+
+#include "config/ticks.hpp"
 
 namespace argus::protocol {
 namespace {
 
-// Interned once: beacons go out every heartbeat from every node.
+// Interned once: beacons go out every hello interval from every node.
 message_kind hello_kind() {
   static const message_kind kind{"hello"};
   return kind;
 }
 
-std::int64_t ticks_of(config::seconds d, config::seconds tick) {
-  return std::max<std::int64_t>(1, static_cast<std::int64_t>(std::llround(d / tick)));
-}
-
 // The last tick at which an answer is still within `d` of the request: an answer read
 // later has taken longer than `d`, so the peer is declared failed on the first such tick.
+// Rounded down, not to the nearest tick: rounding up would wait past `d` for an answer that
+// is already late (1500 ms at 1/15 s is 22.5 ticks: 22, not 23). At least 1: an answer needs
+// a tick to travel.
 std::int64_t last_tick_within(config::seconds d, config::seconds tick) {
-  return std::max<std::int64_t>(1, static_cast<std::int64_t>(std::floor(d / tick + 1e-9)));
+  return std::max<std::int64_t>(1, config::ticks_within(d, tick));
 }
 
 }  // namespace
@@ -30,8 +30,8 @@ node_network::node_network(int self, std::vector<int> attached, const config::sc
       attached_(std::move(attached)),
       router_(self),
       max_hops_(static_cast<std::uint8_t>(std::min(255u, s.network.max_hops))),
-      heartbeat_ticks_(ticks_of(s.controller.heartbeat_interval, s.run.tick)),
-      silence_ticks_(ticks_of(s.controller.member_failure_timeout, s.run.tick)),
+      hello_ticks_(config::to_ticks_at_least_one(s.network.hello_interval, s.run.tick)),
+      silence_ticks_(config::to_ticks_at_least_one(s.network.neighbour_timeout, s.run.tick)),
       timeout_ticks_(last_tick_within(s.network.message_timeout, s.run.tick)) {
   std::sort(attached_.begin(), attached_.end());
 }
@@ -85,7 +85,7 @@ void node_network::tick(std::int64_t tick) {
   }
   if (lost_any) refresh_live();
   // Beacons are spread over the interval by node id, so nodes do not all speak at once.
-  if ((tick + self_) % heartbeat_ticks_ == 0) {
+  if ((tick + self_) % hello_ticks_ == 0) {
     net_message hello;
     hello.id = make_message_id(self_, next_seq_++);
     hello.origin = self_;

@@ -32,10 +32,11 @@ struct peer_failure {
 };
 
 /// A camera node's view of the network, with no knowledge of positions or of the graph beyond
-/// its own links: neighbour discovery by `hello` beacons (one hop, every heartbeat interval),
-/// liveness by what it hears (a neighbour unheard for `member_failure_timeout` is given up, as
-/// Section IV-C treats silence as failure), and multi-hop delivery by `flood_router` over the
-/// live neighbours. The actor feeds it what arrived and ferries what it wants sent.
+/// its own links: neighbour discovery by `hello` beacons (one hop, every network
+/// `hello_interval`), liveness by what it hears (a neighbour unheard for the network's
+/// `neighbour_timeout` is given up, as Section IV-C treats silence as failure), and multi-hop
+/// delivery by `flood_router` over the live neighbours. The actor feeds it what arrived and
+/// ferries what it wants sent.
 class node_network {
  public:
   /// `attached` are the nodes at the other end of this node's links.
@@ -81,7 +82,7 @@ class node_network {
   std::vector<int> attached_;
   flood_router router_;
   std::uint8_t max_hops_;
-  std::int64_t heartbeat_ticks_;
+  std::int64_t hello_ticks_;
   std::int64_t silence_ticks_;
   std::int64_t timeout_ticks_;
   struct open_request {

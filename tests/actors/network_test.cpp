@@ -251,7 +251,7 @@ CAF_TEST(neighbours are given up after a crash and found again after recovery) {
     auto up = events("neighbour_up", fmt::format(R"("camera":{},"neighbour":3)", neighbour));
     CAF_REQUIRE_EQUAL(lost.size(), 1u);
     CAF_REQUIRE_EQUAL(up.size(), 2u);  // at start, and after the recovery at 14 s
-    // Given up after member_failure_timeout (Table 2: 5 s) of silence, before the recovery.
+    // Given up after the network's neighbour_timeout (5 s) of silence, before the recovery.
     CAF_CHECK_GREATER(lost.front().tick, 4 * 15 + 5 * 15 - 15);
     CAF_CHECK_LESS(lost.front().tick, 14 * 15);
     CAF_CHECK_GREATER_OR_EQUAL(up.back().tick, 14 * 15);

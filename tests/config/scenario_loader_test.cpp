@@ -38,6 +38,10 @@ TEST(scenario_loader, network_defaults_are_table_2) {
   EXPECT_EQ(network.node_failure_probability, 0.001);
   EXPECT_EQ(network.max_hops, 3u);
   EXPECT_EQ(network.message_timeout, 1500ms);
+  // Not in Table 2: the hello beacon's period and the silence after which a neighbour is
+  // given up (the values of the heartbeat and member failure timeout they used to borrow).
+  EXPECT_EQ(network.hello_interval, 1s);
+  EXPECT_EQ(network.neighbour_timeout, 5s);
 }
 
 // Table 2, controller and at-node parameters, and the eq. (1) spreads.
@@ -143,6 +147,8 @@ TEST(scenario_loader, reads_every_field_of_a_full_scenario) {
   EXPECT_EQ(network.adjacency, (std::vector<std::array<int, 2>>{{1, 2}, {2, 3}}));
   EXPECT_EQ(network.duplicate_probability, 0.05);
   EXPECT_TRUE(network.reorder);
+  EXPECT_EQ(network.hello_interval, 750ms);
+  EXPECT_EQ(network.neighbour_timeout, 4s);
 
   const auto& controller = loaded.controller;
   EXPECT_EQ(controller.wait_timeout, 90s);

@@ -151,6 +151,23 @@ TEST(scenario_validation, out_of_range_network_values) {
   EXPECT_EQ(only_problem("network: {min_delay: 1 s}\n"),
             (problem{"bad.yaml", 1, 10, "network.max_delay",
                      "expected a duration >= 1 s (at least min_delay), got 500 ms (the default)"}));
+  EXPECT_EQ(
+      only_problem("network: {hello_interval: 0 s}\n"),
+      (problem{"bad.yaml", 1, 27, "network.hello_interval", "expected a duration > 0 s, got 0 s"}));
+  EXPECT_EQ(only_problem("network: {neighbour_timeout: -1 s}\n"),
+            (problem{"bad.yaml", 1, 30, "network.neighbour_timeout",
+                     "expected a duration > 1 s (longer than hello_interval), got -1 s"}));
+  EXPECT_EQ(only_problem("network: {hello_interval: 2 s, neighbour_timeout: 2 s}\n"),
+            (problem{"bad.yaml", 1, 51, "network.neighbour_timeout",
+                     "expected a duration > 2 s (longer than hello_interval), got 2 s"}));
+  EXPECT_EQ(only_problem("network: {hello_interval: 6 s}\n"),
+            (problem{"bad.yaml", 1, 10, "network.neighbour_timeout",
+                     "expected a duration > 6 s (longer than hello_interval), got 5 s (the "
+                     "default)"}));
+  // A bad hello_interval is reported alone; neighbour_timeout is then only checked positive.
+  EXPECT_EQ(
+      only_problem("network: {hello_interval: 0 s, neighbour_timeout: 1 s}\n"),
+      (problem{"bad.yaml", 1, 27, "network.hello_interval", "expected a duration > 0 s, got 0 s"}));
 }
 
 TEST(scenario_validation, out_of_range_controller_values) {

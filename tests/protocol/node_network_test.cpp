@@ -67,11 +67,11 @@ struct ideal_network {
 
 TEST(node_network, discovers_its_neighbours_by_hello_and_forgets_silent_ones) {
   ideal_network net(line_of(3));
-  net.run(0, 30);  // two heartbeats at 15 Hz
+  net.run(0, 30);  // two hello intervals (1 s) at 15 Hz
   EXPECT_EQ(net.nodes.at(2).live_neighbours(), (std::vector<int>{1, 3}));
   EXPECT_EQ(net.nodes.at(1).live_neighbours(), (std::vector<int>{2}));
   net.down.insert(3);
-  net.run(30, 30 + 15 * 4);  // last heard at tick 28; member failure timeout: 5 s
+  net.run(30, 30 + 15 * 4);  // last heard at tick 28; neighbour timeout: 5 s
   EXPECT_EQ(net.nodes.at(2).live_neighbours(), (std::vector<int>{1, 3}));  // not yet
   net.run(30 + 15 * 4, 30 + 15 * 7);
   EXPECT_EQ(net.nodes.at(2).live_neighbours(), (std::vector<int>{1}));
@@ -81,6 +81,24 @@ TEST(node_network, discovers_its_neighbours_by_hello_and_forgets_silent_ones) {
   net.down.erase(3);  // it comes back and is heard again
   net.run(30 + 15 * 7, 30 + 15 * 9);
   EXPECT_EQ(net.nodes.at(2).live_neighbours(), (std::vector<int>{1, 3}));
+}
+
+TEST(node_network, hello_period_and_neighbour_timeout_are_the_network_settings) {
+  auto s = line_of(2);
+  s.network.hello_interval = config::seconds{2.0};
+  s.network.neighbour_timeout = config::seconds{3.0};
+  // The group protocol's heartbeat and member timeout are not the network layer's.
+  s.controller.heartbeat_interval = config::seconds{0.2};
+  s.controller.member_failure_timeout = config::seconds{30.0};
+  ideal_network net(s);
+  net.run(0, 15 * 10);
+  EXPECT_EQ(net.transmissions["hello"], 2 * 5);  // each of two nodes every 30 ticks
+  net.down.insert(2);
+  const auto before = net.changes[1].size();
+  net.run(15 * 10, 15 * 10 + 45);  // last heard at tick 149: given up after 45 ticks more
+  EXPECT_EQ(net.changes[1].size(), before);
+  net.run(15 * 10 + 45, 15 * 10 + 45 + 30);
+  EXPECT_EQ(net.nodes.at(1).live_neighbours(), (std::vector<int>{}));
 }
 
 TEST(node_network, unicast_reaches_a_node_three_hops_away_but_not_four) {
