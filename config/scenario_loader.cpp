@@ -56,15 +56,10 @@ constexpr std::array<std::string_view, 12> network_keys{"loss_probability",
                                                         "communication_range_m",
                                                         "adjacency",
                                                         "duplicate_probability",
-<<<<<<< HEAD
-                                                        "reorder"};
-constexpr std::array<std::string_view, 20> controller_keys{"wait_timeout",
-=======
                                                         "reorder",
                                                         "hello_interval",
                                                         "neighbour_timeout"};
-constexpr std::array<std::string_view, 15> controller_keys{"wait_timeout",
->>>>>>> motion
+constexpr std::array<std::string_view, 20> controller_keys{"wait_timeout",
                                                            "search_timeout",
                                                            "min_relevance",
                                                            "heartbeat_interval",
