@@ -207,7 +207,7 @@ void camera_controller::take_message(const received_message& m, controller_outpu
         if constexpr (std::is_same_v<T, protocol::query_relevance>) {
           on_query(m.origin, msg, out);
         } else if constexpr (std::is_same_v<T, protocol::relevance_bid>) {
-          on_bid(msg, out);
+          on_bid(m.origin, msg, out);
         } else if constexpr (std::is_same_v<T, protocol::join>) {
           on_join(msg, out);
         } else if constexpr (std::is_same_v<T, protocol::status>) {
@@ -266,18 +266,26 @@ void camera_controller::on_query(int from, const protocol::query_relevance& q,
       fmt::format(R"("task":{},"leader":{},"auction":{},"from":{})", t, q.leader, q.auction, from));
 }
 
-void camera_controller::on_bid(const protocol::relevance_bid& b, controller_output& out) {
+void camera_controller::on_bid(int from, const protocol::relevance_bid& b,
+                               controller_output& out) {
   if (!task_ || task_->task != b.task || b.leader != leader_) return;
   if (role_ == group_role::member) {
     send(leader_, b, out);  // members forward group messages to their leader
     return;
   }
   if (!auction_ || b.auction != auction_->id) return;
+  if (from != b.bidder) relayed_by_[b.bidder] = from;
   auto [it, fresh] = auction_->bids.emplace(b.bidder, b);
   if (!fresh && b.relevance > it->second.relevance) it->second = b;
 }
 
 void camera_controller::on_join(const protocol::join& j, controller_output& out) {
+  if (j.invitee != me_.id) {
+    // A copy for the member that relayed the invitee's bid: pass it on.
+    if (task_ && task_->task == j.task.task && role_ == group_role::member && leader_ == j.leader)
+      send(j.invitee, j, out);
+    return;
+  }
   if (task_) {
     if (task_->task == j.task.task) return;
     if (!j.reassign) {
@@ -304,6 +312,10 @@ void camera_controller::on_join(const protocol::join& j, controller_output& out)
 
 void camera_controller::on_status(const protocol::status& s, controller_output& out) {
   if (!task_ || s.task != task_->task || s.sender == me_.id) return;
+  if (auto r = retired_.find(s.sender); r != retired_.end()) {
+    if (now_ - r->second < ticks(settings_.member_failure_timeout)) return;
+    retired_.erase(r);
+  }
   if (role_ == group_role::member) {
     if (s.sender != leader_) return;
     last_leader_status_ = now_;
@@ -332,8 +344,17 @@ void camera_controller::on_status(const protocol::status& s, controller_output& 
 }
 
 void camera_controller::on_handover(const protocol::handover& h, controller_output& out) {
+  // Its statuses still in flight would read as another leader's: ignore them for a while.
+  retired_[h.old_leader] = now_;
+  if (!task_ && h.new_leader == me_.id) {
+    // Left the group while the hand-over was on its way: the task must not die with it.
+    start_task(h.task, group_role::member, h.old_leader, 0.0, now_, out);
+    emit(out, "joined", fmt::format(R"("task":{},"leader":{},"reassign":false)", h.task.task,
+                                    h.old_leader));
+  }
+  // The new leader takes over even if it missed an earlier hand-over and follows someone else.
   if (!task_ || role_ != group_role::member || task_->task != h.task.task ||
-      leader_ != h.old_leader)
+      (leader_ != h.old_leader && h.new_leader != me_.id))
     return;
   if (h.new_leader != me_.id) {
     leader_ = h.new_leader;
@@ -389,6 +410,7 @@ void camera_controller::start_task(const protocol::task_description& task, group
   auction_.reset();
   csp_.reset();
   last_bids_.clear();
+  relayed_by_.clear();
   negotiator_.reset();
   next_auction_at_ = now_;
 }
@@ -533,19 +555,8 @@ void camera_controller::lead(controller_output& out) {
   }
   const double mine = relevance(now_);
   if (now_ - joined_ > silence && mine < settings_.membership_relevance_threshold &&
-      !members_.empty()) {
-    // Section IV-A: a leader below the threshold selects a new leader among its members.
-    auto best = members_.begin();
-    for (auto it = members_.begin(); it != members_.end(); ++it)
-      if (it->second.relevance > best->second.relevance) best = it;
-    protocol::handover h{*task_, me_.id, best->first, members()};
-    for (const auto& [m, rec] : members_) send(m, h, out);
-    emit(out, "handoff",
-         fmt::format(R"("task":{},"from":{},"to":{},"relevance":{:.4f})", task_->task, me_.id,
-                     best->first, best->second.relevance));
-    leave_task("handed_over", out);
+      hand_over(mine, out))
     return;
-  }
   if ((now_ - joined_) % heartbeat == 0) send(protocol::broadcast, own_status(), out);
   demotion_negotiator::actions a;
   negotiator_.tick(now_, a);
@@ -559,6 +570,25 @@ void camera_controller::lead(controller_output& out) {
     if (size < task_->max_cameras || mine < settings_.auction_relevance_threshold)
       open_auction(out);
   }
+}
+
+bool camera_controller::hand_over(double mine, controller_output& out) {
+  // Section IV-A: a leader below the threshold selects a new leader among its members; only one
+  // that still sees the target better, else this leader keeps the group and searches.
+  auto best = members_.end();
+  for (auto it = members_.begin(); it != members_.end(); ++it)
+    if (best == members_.end() || it->second.relevance > best->second.relevance) best = it;
+  if (best == members_.end() ||
+      best->second.relevance < settings_.membership_relevance_threshold ||
+      best->second.relevance <= mine)
+    return false;
+  protocol::handover h{*task_, me_.id, best->first, members()};
+  for (const auto& [m, rec] : members_) send(m, h, out);
+  emit(out, "handoff",
+       fmt::format(R"("task":{},"from":{},"to":{},"relevance":{:.4f})", task_->task, me_.id,
+                   best->first, best->second.relevance));
+  leave_task("handed_over", out);
+  return true;
 }
 
 // --- auctions (Fig. 13) ----------------------------------------------------------------------
@@ -612,7 +642,10 @@ void camera_controller::close_auction(controller_output& out) {
 }
 
 void camera_controller::invite(int camera, bool reassign, controller_output& out) {
-  send(camera, protocol::join{*task_, me_.id, reassign}, out);
+  const protocol::join j{*task_, me_.id, camera, reassign};
+  send(camera, j, out);
+  if (auto via = relayed_by_.find(camera); via != relayed_by_.end() && members_.count(via->second))
+    send(via->second, j, out);
   // Counted at once; a camera that does not join sends no status and is dropped as silent.
   double r = 0.0;
   for (const auto& b : last_bids_)

@@ -104,7 +104,7 @@ class camera_controller {
   void take_query(const operator_query& q, controller_output& out);
   void take_message(const received_message& m, controller_output& out);
   void on_query(int from, const protocol::query_relevance& q, controller_output& out);
-  void on_bid(const protocol::relevance_bid& b, controller_output& out);
+  void on_bid(int from, const protocol::relevance_bid& b, controller_output& out);
   void on_join(const protocol::join& j, controller_output& out);
   void on_status(const protocol::status& s, controller_output& out);
   void on_handover(const protocol::handover& h, controller_output& out);
@@ -127,6 +127,7 @@ class camera_controller {
   void absorb(int camera, controller_output& out);
 
   // Leader's work.
+  bool hand_over(double mine, controller_output& out);
   void open_auction(controller_output& out);
   void close_auction(controller_output& out);
   void invite(int camera, bool reassign, controller_output& out);
@@ -169,6 +170,10 @@ class camera_controller {
   std::optional<auction_state> auction_;
   std::uint32_t next_auction_id_ = 1;
   std::int64_t next_auction_at_ = 0;
+  // Leaders that handed their group over, and when: their late statuses are stale.
+  std::map<int, std::int64_t> retired_;
+  // Which member relayed each bidder's bid (to forward the join through it).
+  std::map<int, int> relayed_by_;
   // The bids of the last closed auction (candidates for conflict resolution).
   std::vector<protocol::relevance_bid> last_bids_;
   std::optional<csp_round> csp_;

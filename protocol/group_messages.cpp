@@ -149,10 +149,11 @@ bool read(reader& r, relevance_bid& m) {
 void write(writer& w, const join& m) {
   w.put(m.task);
   w.put(m.leader);
+  w.put(m.invitee);
   w.put(m.reassign);
 }
 bool read(reader& r, join& m) {
-  return r.get(m.task) && r.get(m.leader) && r.get(m.reassign);
+  return r.get(m.task) && r.get(m.leader) && r.get(m.invitee) && r.get(m.reassign);
 }
 
 void write(writer& w, const status& m) {

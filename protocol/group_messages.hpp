@@ -65,11 +65,14 @@ struct relevance_bid {
   friend bool operator==(const relevance_bid&, const relevance_bid&) = default;
 };
 
-/// The selection (Fig. 13): `leader` invites the receiver into its group. `reassign` is set
-/// when conflict resolution moved the receiver from another group, which it then leaves.
+/// The selection (Fig. 13): `leader` invites camera `invitee` into its group. `reassign` is set
+/// when conflict resolution moved the invitee from another group, which it then leaves. A
+/// member that relayed the invitee's bid gets a copy and forwards it: the invitee may be beyond
+/// the leader's hop limit.
 struct join {
   task_description task;
   int leader = 0;
+  int invitee = 0;
   bool reassign = false;
   friend bool operator==(const join&, const join&) = default;
 };

@@ -5,11 +5,10 @@
 namespace argus::vision {
 namespace {
 
-// One term of eq. (1): (x - x̂)² / 2σ², with x̂ the mid-range; the difference taken the
-// shorter way round when the axis `wraps`.
-double term(double value, const config::degree_range& range, double sigma, bool wraps = false) {
+// One term of eq. (1): (x - x̂)² / 2σ², with x̂ the mid-range.
+double term(double value, const config::degree_range& range, double sigma) {
   const double mid = (range.min_deg + range.max_deg) / 2.0;
-  const double d = wraps ? std::remainder(value - mid, 360.0) : value - mid;
+  const double d = value - mid;
   return d * d / (2.0 * sigma * sigma);
 }
 
@@ -21,7 +20,10 @@ double relevance(const ptz_state& required, const ptz_limits& limits,
   // eq. (1)
   return std::exp(
       -term(required.field_of_view_deg, limits.field_of_view, controller.relevance_sigma_fov_deg) -
-      term(required.pan_deg, limits.pan, controller.relevance_sigma_pan_deg, limits.pan_wraps()) -
+      // A head that pans all the way round never runs out of pan: no leeway is lost, and the
+      // mid-range of [-180, 180] would only measure a compass direction.
+      (limits.pan_wraps() ? 0.0
+                          : term(required.pan_deg, limits.pan, controller.relevance_sigma_pan_deg)) -
       term(required.tilt_deg, limits.tilt, controller.relevance_sigma_tilt_deg));
 }
 

@@ -17,8 +17,9 @@ enum class camera_availability { free, busy };
 /// (`required`, e.g. from centring_pose()), θ̂, α̂, β̂ the mid-points of the camera's field of
 /// view, pan and tilt `limits` (ptz_limits::from() of the camera), and σ the spreads of
 /// `controller` (5.0 degrees by default, as in the paper). A camera with more leeway to turn
-/// and zoom is more relevant. When pan wraps, α - α̂ is taken the shorter way round (pans 360
-/// degrees apart are one pose).
+/// and zoom is more relevant. When pan turns all the way round (ptz_limits::pan_wraps), the pan
+/// term is 0: such a head never runs out of pan, and α̂ = 0 of [-180, 180] would only measure a
+/// compass direction (docs/protocol.md).
 ///
 /// A static camera's limits collapse onto its fixed pose, so its hat values are that pose: its
 /// relevance is 1 for a target already centred at the wanted zoom in its fixed view, and

@@ -23,7 +23,7 @@ std::vector<group_message> one_of_each() {
   relevance_bid bid{3, 1, 4, 9, 0.625, true, false, 5u, 6};
   return {query_relevance{a_task(), 1, 4, true},
           bid,
-          join{a_task(), 1, true},
+          join{a_task(), 1, 9, true},
           status{3, 9, 1, 0.5, 2, 3, {2, 9}},
           handover{a_task(), 1, 9, {2, 9}},
           demotion{demotion_step::demote, 3, 1, {}},

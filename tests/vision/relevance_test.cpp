@@ -67,15 +67,17 @@ TEST(relevance, a_static_camera_is_judged_from_its_fixed_pose) {
               std::exp(-1.0), 1e-12);
 }
 
-TEST(relevance, a_wrapping_pan_is_measured_the_shorter_way_round) {
-  ptz_limits limits;  // pan [-180, 180]: mid-range 0, wraps
+TEST(relevance, a_pan_that_turns_all_the_way_round_costs_no_leeway) {
+  ptz_limits limits;  // pan [-180, 180]: wraps
   limits.tilt = {-80.0, 10.0};
   limits.field_of_view = {5.0, 45.0};
   config::controller_settings controller;
-  // 355 degrees is 5 degrees the other way: one sigma.
-  EXPECT_NEAR(relevance({355.0, -35.0, 25.0}, limits, controller, camera_availability::free),
-              std::exp(-0.5), 1e-12);
-  EXPECT_NEAR(relevance({-355.0, -35.0, 25.0}, limits, controller, camera_availability::free),
+  for (double pan : {0.0, 90.0, -165.0, 355.0})
+    EXPECT_DOUBLE_EQ(relevance({pan, -35.0, 25.0}, limits, controller, camera_availability::free),
+                     1.0)
+        << pan;
+  // The other terms still count: one sigma off in tilt.
+  EXPECT_NEAR(relevance({90.0, -30.0, 25.0}, limits, controller, camera_availability::free),
               std::exp(-0.5), 1e-12);
 }
 
