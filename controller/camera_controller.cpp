@@ -266,8 +266,7 @@ void camera_controller::on_query(int from, const protocol::query_relevance& q,
       fmt::format(R"("task":{},"leader":{},"auction":{},"from":{})", t, q.leader, q.auction, from));
 }
 
-void camera_controller::on_bid(int from, const protocol::relevance_bid& b,
-                               controller_output& out) {
+void camera_controller::on_bid(int from, const protocol::relevance_bid& b, controller_output& out) {
   if (!task_ || task_->task != b.task || b.leader != leader_) return;
   if (role_ == group_role::member) {
     send(leader_, b, out);  // members forward group messages to their leader
@@ -349,8 +348,8 @@ void camera_controller::on_handover(const protocol::handover& h, controller_outp
   if (!task_ && h.new_leader == me_.id) {
     // Left the group while the hand-over was on its way: the task must not die with it.
     start_task(h.task, group_role::member, h.old_leader, 0.0, now_, out);
-    emit(out, "joined", fmt::format(R"("task":{},"leader":{},"reassign":false)", h.task.task,
-                                    h.old_leader));
+    emit(out, "joined",
+         fmt::format(R"("task":{},"leader":{},"reassign":false)", h.task.task, h.old_leader));
   }
   // The new leader takes over even if it missed an earlier hand-over and follows someone else.
   if (!task_ || role_ != group_role::member || task_->task != h.task.task ||
@@ -578,8 +577,7 @@ bool camera_controller::hand_over(double mine, controller_output& out) {
   auto best = members_.end();
   for (auto it = members_.begin(); it != members_.end(); ++it)
     if (best == members_.end() || it->second.relevance > best->second.relevance) best = it;
-  if (best == members_.end() ||
-      best->second.relevance < settings_.membership_relevance_threshold ||
+  if (best == members_.end() || best->second.relevance < settings_.membership_relevance_threshold ||
       best->second.relevance <= mine)
     return false;
   protocol::handover h{*task_, me_.id, best->first, members()};

@@ -22,8 +22,9 @@ double relevance(const ptz_state& required, const ptz_limits& limits,
       -term(required.field_of_view_deg, limits.field_of_view, controller.relevance_sigma_fov_deg) -
       // A head that pans all the way round never runs out of pan: no leeway is lost, and the
       // mid-range of [-180, 180] would only measure a compass direction.
-      (limits.pan_wraps() ? 0.0
-                          : term(required.pan_deg, limits.pan, controller.relevance_sigma_pan_deg)) -
+      (limits.pan_wraps()
+           ? 0.0
+           : term(required.pan_deg, limits.pan, controller.relevance_sigma_pan_deg)) -
       term(required.tilt_deg, limits.tilt, controller.relevance_sigma_tilt_deg));
 }
 

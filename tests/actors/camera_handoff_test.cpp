@@ -62,7 +62,8 @@ TEST(camera_handoff, the_group_carries_the_task_across_cameras_with_emulated_sen
   // Carried by at least three cameras in turn.
   std::set<int> carriers;
   for (const auto& e : events)
-    if (e["kind"] == "task_created" || e["kind"] == "joined") carriers.insert(e["camera"].get<int>());
+    if (e["kind"] == "task_created" || e["kind"] == "joined")
+      carriers.insert(e["camera"].get<int>());
   EXPECT_GE(carriers.size(), 3u);
   expect_one_group_per_camera(events);
   // The task is still carried at the end: some camera leads it.

@@ -1,0 +1,200 @@
+#define CAF_SUITE actors.camera_node
+
+// Camera nodes with their controllers, link actors, the clock and the fault injector under
+// CAF's deterministic test coordinator, sensing through the emulated sensor (with no misses or
+// confusions) a still world: the auction of Fig. 13, a bidder whose links lose everything, a
+// leader's crash and its member's self-promotion, the top-level FSM as actor behaviours, and
+// an operator task on a pedestrian out of view.
+//
+//   camera 3 (100, 70) pan -135      pedestrian 1 at (85, 50): in view of all three
+//              \                       pedestrian 2 at (100, 10): behind camera 2
+//   camera 4 (68, 70) pan -45 --- camera 2 (100, 30) pan 135 (the operator's)
+
+#include <map>
+#include <string>
+
+#include "actors/clock.hpp"
+#include "actors/fault_injector.hpp"
+#include "actors/network_assembly.hpp"
+#include "actors/participant_ids.hpp"
+#include "caf/test/dsl.hpp"
+#include "caf/test/unit_test_impl.hpp"
+#include "protocol/topology.hpp"
+#include "tests/actors/recording_fixture.hpp"
+#include "world/layout_loader.hpp"
+
+using namespace argus;
+using namespace argus::actors;
+using namespace argus::actors::testing;
+
+namespace {
+
+world::pedestrian_state standing(int id, double x, double y, world::rgb8 shirt) {
+  world::pedestrian_state p;
+  p.id = id;
+  p.position = {x, y};
+  p.look.shirt = shirt;
+  p.look.trousers = {40, 40, 120};
+  p.look.skin = {200, 160, 130};
+  p.look.hair = {60, 40, 20};
+  return p;
+}
+
+config::scenario three_cameras() {
+  config::scenario s;
+  s.run.seed = 5;
+  s.network.loss_probability = 0.0;
+  s.network.node_failure_probability = 0.0;
+  s.network.adjacency = {{2, 3}, {3, 4}, {2, 4}};
+  s.sensing.mode = config::sensing_mode::emulated;
+  s.controller.relevance_sigma_fov_deg = 30.0;
+  s.controller.relevance_sigma_pan_deg = 60.0;
+  s.controller.relevance_sigma_tilt_deg = 30.0;
+  auto camera = [](int id, double x, double y, double pan) {
+    config::camera_settings c;
+    c.id = id;
+    c.position = {x, y};
+    c.height_m = 6.0;
+    c.pan_deg = pan;
+    c.imaging.width_px = 320;
+    c.imaging.height_px = 240;
+    return c;
+  };
+  s.cameras = {camera(2, 100, 30, 135), camera(3, 100, 70, -135), camera(4, 68, 70, -45)};
+  return s;
+}
+
+struct fixture : recording_fixture {
+  std::map<int, caf::actor> cameras;
+
+  void run_cameras(const config::scenario& s, double seconds) {
+    auto world = std::make_shared<camera_world>();
+    world->station = world::station::load(world::layout_path(s));
+    world->board = std::make_shared<snapshot_board>();
+    world->sensor_model.miss_bias = -50.0;  // never misses
+    world->sensor_model.confusion_bias = -50.0;
+    world->sensor_model.box_sigma = 0.0;
+    world->board->publish(std::make_shared<const world::snapshot>(
+        *world->station, 0, std::chrono::duration<double>{0.0},
+        std::vector<world::pedestrian_state>{standing(1, 85, 50, {200, 30, 30}),
+                                             standing(2, 100, 10, {30, 200, 30})}));
+    clock_settings cs;
+    cs.end_tick = static_cast<std::int64_t>(seconds * 15.0);
+    cs.tick_seconds = s.run.tick.count();
+    auto clock = spawn_clock(sys, cs, recorder, caf::actor{});
+    auto net = spawn_network(sys, s, protocol::topology(s), clock, world);
+    cameras = net.cameras;
+    auto faults = spawn_fault_injector(sys, s, clock, std::move(net));
+    self->send(clock, join_atom_v, faults, fault_injector_participant(s));
+    self->send(clock, start_atom_v);
+    run();
+    CAF_REQUIRE(rec->done);
+  }
+
+  std::vector<sim_event> events(const std::string& kind, const std::string& fields = {}) const {
+    std::vector<sim_event> out;
+    for (const auto& ev : rec->events)
+      if (ev.kind == kind && ev.fields_json.find(fields) != std::string::npos) out.push_back(ev);
+    return out;
+  }
+
+  // The top-level state camera `id` was in at the end of the run (its last node_state event).
+  std::string final_state(int id) const {
+    std::string out = "idle";
+    for (const auto& ev : events("node_state", fmt::format(R"("camera":{},)", id))) {
+      const auto at = ev.fields_json.find(R"("to":")") + 6;
+      out = ev.fields_json.substr(at, ev.fields_json.find('"', at) - at);
+    }
+    return out;
+  }
+};
+
+config::operator_task task_at_camera_2(int pedestrian) {
+  config::operator_task t;
+  t.at = config::seconds{3.0};  // after neighbour discovery (first hellos by 1 s)
+  t.pedestrian = pedestrian;
+  t.camera = 2;
+  t.cameras_wanted = 2;
+  return t;
+}
+
+}  // namespace
+
+CAF_TEST_FIXTURE_SCOPE(camera_node_tests, fixture)
+
+CAF_TEST(an operator task forms a group by auction) {
+  auto s = three_cameras();
+  s.tasks = {task_at_camera_2(1)};
+  run_cameras(s, 12.0);
+  CAF_CHECK_EQUAL(events("task_created", R"("camera":2)").size(), 1u);
+  CAF_CHECK_GREATER_OR_EQUAL(events("auction", R"("camera":2)").size(), 1u);
+  CAF_CHECK_EQUAL(events("bid", R"("camera":3)").size(), 1u);
+  CAF_CHECK_EQUAL(events("bid", R"("camera":4)").size(), 1u);
+  // One slot (two cameras wanted, the leader is one): the better bidder is invited.
+  const auto invited = events("invited", R"("camera":2)");
+  CAF_REQUIRE_EQUAL(invited.size(), 1u);
+  const int member = invited[0].fields_json.find(R"("member":3)") != std::string::npos ? 3 : 4;
+  const int loser = member == 3 ? 4 : 3;
+  CAF_CHECK_EQUAL(events("joined", fmt::format(R"("camera":{})", member)).size(), 1u);
+  CAF_CHECK_EQUAL(final_state(2), "performing_task");
+  CAF_CHECK_EQUAL(final_state(member), "performing_task");
+  // The other bidder waits for a join until the bidding timeout (2 min).
+  CAF_CHECK_EQUAL(final_state(loser), "computing_relevance");
+  CAF_CHECK(events("bad_message").empty());
+}
+
+CAF_TEST(a bidder whose links lose everything is not recruited) {
+  auto s = three_cameras();
+  s.tasks = {task_at_camera_2(1)};
+  config::fault burst;
+  burst.at = config::seconds{2.5};
+  burst.kind = config::fault_kind::loss_burst;
+  burst.camera = 3;
+  burst.length = config::seconds{5.0};
+  burst.loss_probability = 1.0;
+  s.faults = {burst};
+  run_cameras(s, 12.0);
+  CAF_CHECK(events("bid", R"("camera":3)").empty() || events("invited", R"("member":3)").empty());
+  CAF_CHECK_EQUAL(events("invited", R"("member":4)").size(), 1u);
+  CAF_CHECK_EQUAL(events("joined", R"("camera":4)").size(), 1u);
+}
+
+CAF_TEST(a member takes over when its leader crashes) {
+  auto s = three_cameras();
+  s.tasks = {task_at_camera_2(1)};
+  config::fault crash;
+  crash.at = config::seconds{8.0};
+  crash.kind = config::fault_kind::crash;
+  crash.camera = 2;
+  s.faults = {crash};
+  run_cameras(s, 14.0);
+  const auto taken = events("leader_changed", R"("reason":"leader_failed")");
+  CAF_REQUIRE_EQUAL(taken.size(), 1u);
+  // Within the leader failure timeout (3 s) and a heartbeat of the crash.
+  CAF_CHECK_LESS_OR_EQUAL(taken[0].tick, 8 * 15 + 4 * 15 + 1);
+  CAF_CHECK_GREATER_OR_EQUAL(taken[0].tick, 8 * 15 + 3 * 15 - 15);
+}
+
+CAF_TEST(a task on a pedestrian out of view is refused) {
+  auto s = three_cameras();
+  s.tasks = {task_at_camera_2(2)};
+  run_cameras(s, 4.0);
+  CAF_CHECK_EQUAL(events("task_refused", R"("reason":"not_in_view")").size(), 1u);
+  CAF_CHECK(events("task_created").empty());
+  CAF_CHECK_EQUAL(final_state(2), "idle");
+}
+
+// The behaviour answers for the state: a node with nothing to do is idle.
+CAF_TEST(a new node is in its idle behaviour) {
+  auto s = three_cameras();
+  auto node = spawn_camera_node(sys, s, s.cameras[0], {});
+  auto answer = self->request(node, caf::infinite, node_state_atom_v);
+  run();
+  std::string state;
+  answer.receive([&](std::string& name) { state = name; }, [](caf::error&) {});
+  CAF_CHECK_EQUAL(state, "idle");
+  anon_send_exit(node, caf::exit_reason::user_shutdown);
+  run();
+}
+
+CAF_TEST_FIXTURE_SCOPE_END()
