@@ -296,6 +296,7 @@ class clock_actor : public caf::event_based_actor {
   void finish_tick() {
     if (!batch_.empty()) {
       std::stable_sort(batch_.begin(), batch_.end(), canonical_less);
+      forward_group_changes();
       send(recorder_, record_atom_v, tick_, std::move(batch_));
       batch_.clear();
       ++unwritten_batches_;
@@ -326,6 +327,17 @@ class clock_actor : public caf::event_based_actor {
       send(this, advance_atom_v);
     else
       delayed_send(this, due - now, advance_atom_v);
+  }
+
+  // The progress line shows who carries each task: it gets the events that change groups.
+  void forward_group_changes() {
+    if (!progress_) return;
+    std::vector<sim_event> changes;
+    for (const auto& ev : batch_)
+      if (ev.kind == "task_created" || ev.kind == "joined" || ev.kind == "left_task" ||
+          ev.kind == "leader_changed")
+        changes.push_back(ev);
+    if (!changes.empty()) send(progress_, record_atom_v, tick_, std::move(changes));
   }
 
   void report_progress(bool force) {
