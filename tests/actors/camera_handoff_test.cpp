@@ -23,6 +23,11 @@ std::vector<nlohmann::json> run(const std::string& file, double seconds, const s
   s.run.threads = 2;
   s.run.output_dir = (std::filesystem::temp_directory_path() / out).string();
   run_scenario(s, false);
+  // Every message the protocol sent is accounted for: delivered, lost, dropped or in flight.
+  std::ifstream summary(std::filesystem::path(s.run.output_dir) / "summary.json");
+  const auto sum = nlohmann::json::parse(summary);
+  EXPECT_TRUE(sum["network"]["invariant_holds"].get<bool>());
+  EXPECT_GT(sum["network"]["by_kind"]["status"]["delivered"].get<int>(), 0);
   std::vector<nlohmann::json> events;
   std::ifstream in(std::filesystem::path(s.run.output_dir) / "events.jsonl");
   for (std::string line; std::getline(in, line);) events.push_back(nlohmann::json::parse(line));

@@ -1,6 +1,6 @@
-// The protocol under random loss and crashes, over 200 seeds each for both merge rules: after
-// the faults stop, no task has two leaders for longer than the merge timeout (hand-overs and
-// stale status under delay may make two for a while; the merge must end it).
+// The protocol under random loss, duplicates, link cuts and crashes, over 200 seeds each for both
+// merge rules: after the faults stop, no task has two leaders for longer than the merge timeout
+// (hand-overs and stale status under delay may make two for a while; the merge must end it).
 
 #include <gtest/gtest.h>
 
@@ -36,7 +36,19 @@ chaos_outcome run_chaos(std::uint64_t seed, config::merge_rule rule) {
     if (phase > 2) return std::nullopt;
     return centred_box();
   };
-  h.drop = [random](int, int, const protocol::group_message&) { return random->chance(0.1); };
+  // A cut between two cameras for a while, during the auctions and conflicts.
+  world::rng cut(seed * 104729 + 3);
+  const int cut_a = 1 + static_cast<int>(cut.below(5));
+  const int cut_b = 1 + static_cast<int>(cut.below(5));
+  const auto cut_from = static_cast<std::int64_t>(cut.below(300));
+  auto clock = std::make_shared<std::int64_t>(0);
+  h.drop = [random, cut_a, cut_b, cut_from, clock](int from, int to,
+                                                   const protocol::group_message&) {
+    const bool cut_now = *clock >= cut_from && *clock < cut_from + 100 &&
+                         ((from == cut_a && to == cut_b) || (from == cut_b && to == cut_a));
+    return cut_now || random->chance(0.1);
+  };
+  h.duplicate = [random](int, int, const protocol::group_message&) { return random->chance(0.05); };
   auto a = test_task(2, 3);
   auto b = test_task(1, 2);
   b.task = 8;
@@ -55,6 +67,7 @@ chaos_outcome run_chaos(std::uint64_t seed, config::merge_rule rule) {
   for (std::int64_t t = 0; t < 1200; ++t) {
     for (const auto& [at, camera] : crashes)
       if (at == t) h.crash(camera);
+    *clock = t;
     h.run_until(t + 1);
     if (t < 400) continue;  // faults end at 400
     for (task_id task : {7u, 8u}) {

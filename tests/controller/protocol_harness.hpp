@@ -85,6 +85,8 @@ class protocol_harness {
   sight sees = [](int, task_id, std::int64_t) { return std::nullopt; };
   /// Which messages are lost; by default none.
   dropper drop = [](int, int, const protocol::group_message&) { return false; };
+  /// Which messages arrive twice (a tick apart); by default none.
+  dropper duplicate = [](int, int, const protocol::group_message&) { return false; };
 
   /// The operator asks `camera` to observe `task`'s target, seen at `box`, at tick `at`.
   void operator_query_at(std::int64_t at, int camera, protocol::task_description task,
@@ -161,6 +163,8 @@ class protocol_harness {
       if (id == from || (m.destination != protocol::broadcast && m.destination != id)) continue;
       if (down_.count(id) != 0 || drop(from, id, *decoded)) continue;
       inbox_[{now_ + delay_, id}].push_back(received_message{from, *decoded});
+      if (duplicate(from, id, *decoded))
+        inbox_[{now_ + delay_ + 1, id}].push_back(received_message{from, *decoded});
     }
   }
 
