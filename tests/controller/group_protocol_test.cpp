@@ -94,6 +94,9 @@ TEST(group_protocol, a_leader_that_loses_its_target_hands_the_group_over) {
   EXPECT_EQ(h.count("handoff", 1), 1u);
   EXPECT_EQ(h.node(2).role(), group_role::leader);
   EXPECT_EQ(h.node(1).state(), node_state::idle);
+  // Its task over, the camera goes back to its default pose (Section III-C, reset).
+  ASSERT_TRUE(h.last_command(1));
+  EXPECT_EQ(*h.last_command(1), node_identity::from(testing::test_camera(1)).home);
 }
 
 // Two leaders of one task (as after a leader's crash is wrongly presumed): the groups merge.

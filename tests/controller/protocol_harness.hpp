@@ -103,6 +103,12 @@ class protocol_harness {
   }
 
   camera_controller& node(int id) { return nodes_.at(id); }
+  /// The last pose camera `id` was commanded to, if any.
+  std::optional<vision::ptz_state> last_command(int id) const {
+    auto it = commands_.find(id);
+    if (it == commands_.end()) return std::nullopt;
+    return it->second;
+  }
   std::int64_t now() const { return now_; }
 
   /// Events logged so far, as "kind camera fields" lines, for searching.
@@ -150,6 +156,7 @@ class protocol_harness {
       auto out = node.step(in);
       for (auto& e : out.events) events_.emplace_back(id, std::move(e));
       looks_[id] = std::move(out.looks);
+      if (out.command) commands_[id] = poses_[id] = *out.command;  // an ideal head
       for (const auto& m : out.messages) deliver(id, m);
     }
   }
@@ -173,6 +180,7 @@ class protocol_harness {
   std::int64_t now_ = 0;
   std::map<int, camera_controller> nodes_;
   std::map<int, vision::ptz_state> poses_;
+  std::map<int, vision::ptz_state> commands_;
   std::map<int, std::vector<look_request>> looks_;
   std::map<std::pair<std::int64_t, int>, std::vector<received_message>> inbox_;
   std::map<std::int64_t, std::vector<std::pair<int, operator_query>>> queries_;
