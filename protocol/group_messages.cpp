@@ -1,7 +1,9 @@
 #include "protocol/group_messages.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <tuple>
 #include <type_traits>
 
 namespace argus::protocol {
@@ -51,6 +53,19 @@ class writer {
   void put(const camera_relevance& c) {
     put(c.camera);
     put(c.relevance);
+  }
+  template <class T>
+  void put_any(const T& x) {
+    put(x);
+  }
+  template <class T>
+  void put_any(const std::vector<T>& x) {
+    put_vector(x);
+  }
+  template <class T>
+  void put_any(const std::optional<T>& x) {
+    put(x.has_value());
+    put(x.value_or(T{}));
   }
   std::string take() && { return std::move(out_); }
 
@@ -106,6 +121,22 @@ class reader {
            t.min_cameras <= t.max_cameras;
   }
   bool get(camera_relevance& c) { return get(c.camera) && get(c.relevance); }
+  template <class T>
+  bool get_any(T& x) {
+    return get(x);
+  }
+  template <class T>
+  bool get_any(std::vector<T>& x) {
+    return get_vector(x);
+  }
+  template <class T>
+  bool get_any(std::optional<T>& x) {
+    bool present = false;
+    T value{};
+    if (!get(present) || !get(value)) return false;
+    if (present) x = value;
+    return true;
+  }
   bool done() const noexcept { return at_ == in_.size(); }
 
  private:
@@ -113,118 +144,66 @@ class reader {
   std::size_t at_ = 0;
 };
 
-void write(writer& w, const query_relevance& m) {
-  w.put(m.task);
-  w.put(m.leader);
-  w.put(m.auction);
-  w.put(m.relay);
+// Each message's fields, in wire order: the one list both directions use.
+auto fields(query_relevance& m) {
+  return std::tie(m.task, m.leader, m.auction, m.relay);
 }
-bool read(reader& r, query_relevance& m) {
-  return r.get(m.task) && r.get(m.leader) && r.get(m.auction) && r.get(m.relay);
+auto fields(relevance_bid& m) {
+  return std::tie(m.task, m.leader, m.auction, m.bidder, m.relevance, m.busy, m.locked,
+                  m.other_task, m.other_leader);
 }
-
-void write(writer& w, const relevance_bid& m) {
-  w.put(m.task);
-  w.put(m.leader);
-  w.put(m.auction);
-  w.put(m.bidder);
-  w.put(m.relevance);
-  w.put(m.busy);
-  w.put(m.locked);
-  w.put(m.other_task.has_value());
-  w.put(m.other_task.value_or(0));
-  w.put(m.other_leader);
+auto fields(join& m) {
+  return std::tie(m.task, m.leader, m.invitee, m.reassign);
 }
-bool read(reader& r, relevance_bid& m) {
-  bool has_other = false;
-  task_id other = 0;
-  if (!(r.get(m.task) && r.get(m.leader) && r.get(m.auction) && r.get(m.bidder) &&
-        r.get(m.relevance) && r.get(m.busy) && r.get(m.locked) && r.get(has_other) &&
-        r.get(other) && r.get(m.other_leader)))
-    return false;
-  if (has_other) m.other_task = other;
-  return m.relevance >= 0.0 && m.relevance <= 1.0;
+auto fields(status& m) {
+  return std::tie(m.task, m.sender, m.leader, m.relevance, m.min_cameras, m.max_cameras, m.members);
+}
+auto fields(handover& m) {
+  return std::tie(m.task, m.old_leader, m.new_leader, m.members);
+}
+auto fields(demotion& m) {
+  return std::tie(m.task, m.sender, m.members);
+}
+auto fields(csp_query& m) {
+  return std::tie(m.solver_task, m.solver, m.round);
+}
+auto fields(csp_data& m) {
+  return std::tie(m.task, m.leader, m.round, m.min_cameras, m.max_cameras, m.candidates, m.pinned);
+}
+auto fields(csp_result& m) {
+  return std::tie(m.task, m.solver, m.cameras, m.minimum);
 }
 
-void write(writer& w, const join& m) {
-  w.put(m.task);
-  w.put(m.leader);
-  w.put(m.invitee);
-  w.put(m.reassign);
-}
-bool read(reader& r, join& m) {
-  return r.get(m.task) && r.get(m.leader) && r.get(m.invitee) && r.get(m.reassign);
+bool is_relevance(double r) {
+  return r >= 0.0 && r <= 1.0;
 }
 
-void write(writer& w, const status& m) {
-  w.put(m.task);
-  w.put(m.sender);
-  w.put(m.leader);
-  w.put(m.relevance);
-  w.put(m.min_cameras);
-  w.put(m.max_cameras);
-  w.put_vector(m.members);
+// What a whole message must also satisfy, beyond each field's own checks.
+template <class T>
+bool valid(const T&) {
+  return true;
 }
-bool read(reader& r, status& m) {
-  return r.get(m.task) && r.get(m.sender) && r.get(m.leader) && r.get(m.relevance) &&
-         r.get(m.min_cameras) && r.get(m.max_cameras) && r.get_vector(m.members) &&
-         m.relevance >= 0.0 && m.relevance <= 1.0;
+bool valid(const relevance_bid& m) {
+  return is_relevance(m.relevance);
 }
-
-void write(writer& w, const handover& m) {
-  w.put(m.task);
-  w.put(m.old_leader);
-  w.put(m.new_leader);
-  w.put_vector(m.members);
+bool valid(const status& m) {
+  return is_relevance(m.relevance);
 }
-bool read(reader& r, handover& m) {
-  return r.get(m.task) && r.get(m.old_leader) && r.get(m.new_leader) && r.get_vector(m.members);
+bool valid(const csp_data& m) {
+  return m.min_cameras <= m.max_cameras &&
+         std::all_of(m.candidates.begin(), m.candidates.end(),
+                     [](const camera_relevance& c) { return is_relevance(c.relevance); });
 }
 
-void write(writer& w, const demotion& m) {
-  w.put(m.task);
-  w.put(m.sender);
-  w.put_vector(m.members);
-}
-bool read(reader& r, demotion& m) {
-  return r.get(m.task) && r.get(m.sender) && r.get_vector(m.members);
+template <class T>
+void write(writer& w, const T& m) {
+  // The writer only reads the fields; fields() takes them mutable for the reader's sake.
+  std::apply([&w](const auto&... x) { (w.put_any(x), ...); }, fields(const_cast<T&>(m)));
 }
 
-void write(writer& w, const csp_query& m) {
-  w.put(m.solver_task);
-  w.put(m.solver);
-  w.put(m.round);
-}
-bool read(reader& r, csp_query& m) {
-  return r.get(m.solver_task) && r.get(m.solver) && r.get(m.round);
-}
-
-void write(writer& w, const csp_data& m) {
-  w.put(m.task);
-  w.put(m.leader);
-  w.put(m.round);
-  w.put(m.min_cameras);
-  w.put(m.max_cameras);
-  w.put_vector(m.candidates);
-  w.put_vector(m.pinned);
-}
-bool read(reader& r, csp_data& m) {
-  if (!(r.get(m.task) && r.get(m.leader) && r.get(m.round) && r.get(m.min_cameras) &&
-        r.get(m.max_cameras) && r.get_vector(m.candidates) && r.get_vector(m.pinned)))
-    return false;
-  for (const auto& c : m.candidates)
-    if (c.relevance < 0.0 || c.relevance > 1.0) return false;
-  return m.min_cameras <= m.max_cameras;
-}
-
-void write(writer& w, const csp_result& m) {
-  w.put(m.task);
-  w.put(m.solver);
-  w.put_vector(m.cameras);
-  w.put(m.minimum);
-}
-bool read(reader& r, csp_result& m) {
-  return r.get(m.task) && r.get(m.solver) && r.get_vector(m.cameras) && r.get(m.minimum);
+template <class T>
+bool read(reader& r, T& m) {
+  return std::apply([&r](auto&... x) { return (r.get_any(x) && ...); }, fields(m)) && valid(m);
 }
 
 std::string_view demotion_kind(demotion_step step) {
