@@ -281,8 +281,10 @@ void camera_controller::on_bid(int from, const protocol::relevance_bid& b, contr
 void camera_controller::on_join(const protocol::join& j, controller_output& out) {
   if (j.invitee != me_.id) {
     // A copy for the member that relayed the invitee's bid: pass it on.
-    if (task_ && task_->task == j.task.task && role_ == group_role::member && leader_ == j.leader)
+    if (task_ && task_->task == j.task.task && role_ == group_role::member && leader_ == j.leader) {
       send(j.invitee, j, out);
+      relayed_for_.insert(j.invitee);
+    }
     return;
   }
   if (task_) {
@@ -316,7 +318,11 @@ void camera_controller::on_status(const protocol::status& s, controller_output& 
     retired_.erase(r);
   }
   if (role_ == group_role::member) {
+    // Members forward group messages between their leader and the cameras they recruited
+    // through their own neighbourhood, which may be beyond the leader's hop limit.
+    if (s.leader == leader_ && relayed_for_.count(s.sender) != 0) send(leader_, s, out);
     if (s.sender != leader_) return;
+    for (int far : relayed_for_) send(far, s, out);
     last_leader_status_ = now_;
     if (s.leader != s.sender) {
       follow_leader(s.leader, "leader_demoted", out);
@@ -409,6 +415,7 @@ void camera_controller::start_task(const protocol::task_description& task, group
   auction_.reset();
   csp_.reset();
   last_bids_.clear();
+  relayed_for_.clear();
   relayed_by_.clear();
   negotiator_.reset();
   next_auction_at_ = now_;

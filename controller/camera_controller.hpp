@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <map>
 #include <optional>
+#include <set>
 #include <string_view>
 #include <vector>
 
@@ -170,6 +171,9 @@ class camera_controller {
   std::optional<auction_state> auction_;
   std::uint32_t next_auction_id_ = 1;
   std::int64_t next_auction_at_ = 0;
+  // Member: cameras it recruited through its neighbourhood (forwarded their join), whose
+  // status it forwards to the leader and to which it forwards the leader's.
+  std::set<int> relayed_for_;
   // Leaders that handed their group over, and when: their late statuses are stale.
   std::map<int, std::int64_t> retired_;
   // Which member relayed each bidder's bid (to forward the join through it).
