@@ -213,7 +213,9 @@ value_range range_of(const cv::Mat& values) {
 
 // out[x] = above[x] + sums[x]: a row of the integral image (one add each, the same bits in
 // every variant).
-#ifdef ARGUS_LOCALIZER_X86
+// Not under ThreadSanitizer: the clones' resolver runs while the dynamic loader relocates the
+// program, before the TSan runtime is up, and its instrumented code crashes there.
+#if defined(ARGUS_LOCALIZER_X86) && !defined(__SANITIZE_THREAD__)
 __attribute__((target_clones("avx512f", "avx2", "default")))
 #endif
 void add_rows(const double* __restrict above, const double* __restrict sums,
