@@ -11,6 +11,7 @@
 //   camera 4 (68, 70) pan -45 --- camera 2 (100, 30) pan 135 (the operator's)
 
 #include <map>
+#include <set>
 #include <string>
 
 #include "actors/clock.hpp"
@@ -173,6 +174,49 @@ CAF_TEST(a member takes over when its leader crashes) {
   // Within the leader failure timeout (3 s) and a heartbeat of the crash.
   CAF_CHECK_LESS_OR_EQUAL(taken[0].tick, 8 * 15 + 4 * 15 + 1);
   CAF_CHECK_GREATER_OR_EQUAL(taken[0].tick, 8 * 15 + 3 * 15 - 15);
+}
+
+// Leader 2 and its member are cut off from each other for 7 s: the leader drops the silent
+// member, the member leads itself, and once the links heal the two leaders of the task merge
+// (the lower id follows the higher).
+CAF_TEST(a partition splits the group and healing merges it) {
+  auto s = three_cameras();
+  s.tasks = {task_at_camera_2(1)};
+  s.tasks[0].max_cameras = 3;
+  for (int peer : {3, 4}) {
+    config::fault cut;
+    cut.at = config::seconds{10.0};
+    cut.kind = config::fault_kind::link_cut;
+    cut.camera = 2;
+    cut.peer = peer;
+    s.faults.push_back(cut);
+    cut.at = config::seconds{17.0};
+    cut.kind = config::fault_kind::link_heal;
+    s.faults.push_back(cut);
+  }
+  run_cameras(s, 25.0);
+  CAF_CHECK_GREATER_OR_EQUAL(events("member_dropped", R"("reason":"silent")").size(), 1u);
+  CAF_CHECK_GREATER_OR_EQUAL(events("leader_changed", R"("reason":"leader_failed")").size(), 1u);
+  CAF_CHECK_GREATER_OR_EQUAL(events("leader_changed", R"("reason":"demoted")").size(), 1u);
+  // At the end one camera leads the task and the others follow it.
+  std::map<int, int> follows;  // camera -> leader
+  for (const auto& ev : rec->events) {
+    if (ev.kind != "leader_changed" && ev.kind != "joined" && ev.kind != "task_created" &&
+        ev.kind != "left_task")
+      continue;
+    const int camera = std::stoi(ev.fields_json.substr(ev.fields_json.find(R"("camera":)") + 9));
+    if (ev.kind == "left_task") {
+      follows.erase(camera);
+    } else if (ev.kind == "task_created") {
+      follows[camera] = camera;
+    } else {
+      follows[camera] = std::stoi(ev.fields_json.substr(ev.fields_json.find(R"("leader":)") + 9));
+    }
+  }
+  std::set<int> leaders;
+  for (const auto& [camera, leader] : follows)
+    if (camera == leader) leaders.insert(camera);
+  CAF_CHECK_EQUAL(leaders.size(), 1u);
 }
 
 CAF_TEST(a task on a pedestrian out of view is refused) {
