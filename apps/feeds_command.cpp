@@ -11,6 +11,7 @@
 
 #include "CLI/CLI.hpp"
 #include "apps/commands.hpp"
+#include "apps/option_checks.hpp"
 #include "apps/output_file.hpp"
 #include "apps/time_option.hpp"
 #include "config/duration.hpp"
@@ -45,13 +46,6 @@ int feeds(const feeds_arguments& args) {
     std::cerr << fmt::format(
         "argus feeds: --time: expected a non-negative duration, e.g. '90 s', got '{}'\n",
         args.time);
-    return bad_input;
-  }
-  if (args.width < 16 || args.width > 4096 || args.height < 16 || args.height > 4096) {
-    std::cerr << fmt::format(
-        "argus feeds: --width/--height: expected 16 to 4096 pixels, got "
-        "{}x{}\n",
-        args.width, args.height);
     return bad_input;
   }
   config::scenario scenario;
@@ -127,8 +121,10 @@ void add_feeds_command(CLI::App& app, int& result) {
   cmd->add_option("--time", args->time,
                   "Virtual time to step the crowd to, e.g. '90 s' (default 60 s)");
   cmd->add_flag("--raw", args->raw, "Skip the imaging model");
-  cmd->add_option("--width", args->width, "Width of one camera's tile (default 320)");
-  cmd->add_option("--height", args->height, "Height of one camera's tile (default 240)");
+  cmd->add_option("--width", args->width, "Width of one camera's tile (default 320)")
+      ->check(integer_in(16, 4096));
+  cmd->add_option("--height", args->height, "Height of one camera's tile (default 240)")
+      ->check(integer_in(16, 4096));
   cmd->add_option("--out", args->out, "Image file to write (PNG)")->required();
   cmd->callback([args, &result] { result = feeds(*args); });
 }

@@ -8,6 +8,7 @@
 
 #include "CLI/CLI.hpp"
 #include "apps/commands.hpp"
+#include "apps/option_checks.hpp"
 #include "apps/output_file.hpp"
 #include "apps/time_option.hpp"
 #include "config/duration.hpp"
@@ -43,14 +44,6 @@ int render(const render_arguments& args) {
         "argus render: --time: expected a non-negative duration, e.g. '90 s', got '{}'\n",
         args.time);
     return bad_input;
-  }
-  for (auto [name, value] :
-       {std::pair{"--width", args.width}, std::pair{"--height", args.height}}) {
-    if (value && (*value < 16 || *value > 8192)) {
-      std::cerr << fmt::format("argus render: {}: expected 16 to 8192 pixels, got {}\n", name,
-                               *value);
-      return bad_input;
-    }
   }
   config::scenario scenario;
   std::shared_ptr<const world::station> station;
@@ -121,12 +114,16 @@ void add_render_command(CLI::App& app, int& result) {
       "render", "Render one camera's synthetic video frame at a moment of the scenario (PNG)");
   auto args = std::make_shared<render_arguments>();
   cmd->add_option("SCENARIO", args->scenario, "Scenario YAML file")->required();
-  cmd->add_option("--camera", args->camera, "Camera id")->required();
+  cmd->add_option("--camera", args->camera, "Camera id")
+      ->required()
+      ->check(integer_in(INT32_MIN, INT32_MAX));
   cmd->add_option("--time", args->time,
                   "Virtual time to step the crowd to, e.g. '90 s' (default 60 s)");
   cmd->add_flag("--raw", args->raw, "Skip the imaging model (colour response, noise, JPEG...)");
-  cmd->add_option("--width", args->width, "Image width in pixels (default: the camera's)");
-  cmd->add_option("--height", args->height, "Image height in pixels (default: the camera's)");
+  cmd->add_option("--width", args->width, "Image width in pixels (default: the camera's)")
+      ->check(integer_in(16, 8192));
+  cmd->add_option("--height", args->height, "Image height in pixels (default: the camera's)")
+      ->check(integer_in(16, 8192));
   cmd->add_option("--out", args->out, "Image file to write (PNG)")->required();
   cmd->callback([args, &result] { result = render(*args); });
 }

@@ -8,6 +8,7 @@
 
 #include "actors/run_scenario.hpp"
 #include "apps/commands.hpp"
+#include "apps/option_checks.hpp"
 #include "config/duration.hpp"
 #include "config/scenario_error.hpp"
 #include "config/scenario_loader.hpp"
@@ -98,12 +99,12 @@ void add_run_command(CLI::App& app, int& result) {
   auto* cmd = app.add_subcommand("run", "Run a scenario and write its event log and summary");
   auto args = std::make_shared<run_arguments>();
   cmd->add_option("SCENARIO", args->scenario, "Scenario YAML file")->required();
-  cmd->add_option("--seed", args->seed, "Run seed (overrides run.seed)");
+  cmd->add_option("--seed", args->seed, "Run seed (overrides run.seed)")->check(whole_number());
   cmd->add_option("--threads", args->threads, "CAF scheduler worker threads (0 = all cores)")
-      ->check(CLI::Range(0u, 256u));
+      ->check(integer_in(0, 256));
   cmd->add_option("--speed", args->speed,
                   "1 = paced to wall clock, N = N times faster, 0 = free-running")
-      ->check(CLI::NonNegativeNumber);
+      ->check(number_in(0.0, HUGE_VAL));
   cmd->add_option("--duration", args->duration, "Virtual duration, e.g. '90 s' or '2 min'");
   cmd->add_option("--out", args->out, "Output directory (default out/<scenario name>)");
   cmd->add_flag("--json", args->json, "Print the outcome as one JSON object");

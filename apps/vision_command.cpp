@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "CLI/CLI.hpp"
+#include "apps/option_checks.hpp"
 #include "apps/time_option.hpp"
 #include "config/duration.hpp"
 #include "config/scenario_error.hpp"
@@ -198,12 +199,12 @@ void add_vision_command(CLI::App& app, int& result) {
   cmd->add_option("--target", args->target, "Image of the target patch whose colours to find")
       ->required();
   cmd->add_option("--rho", args->rho, "Acceptance threshold on histogram intersection")
-      ->check(CLI::Range(0.0, 1.0));
+      ->check(number_in(0.0, 1.0));
   cmd->add_option("--single-scale", args->single_scale,
                   "Swain-Ballard single-scale localisation with kernel size L (pixels)")
-      ->check(CLI::PositiveNumber);
+      ->check(integer_in(1, 100000));
   cmd->add_option("--max-regions", args->max_regions, "At most this many regions")
-      ->check(CLI::PositiveNumber);
+      ->check(integer_in(1, 1000000));
   cmd->callback([args, &result] { result = localize(*args); });
 
   auto calibration = std::make_shared<calibrate_arguments>();
@@ -216,20 +217,21 @@ void add_vision_command(CLI::App& app, int& result) {
   fit->add_option("--duration", calibration->duration, "Virtual time covered (default 60 s)");
   fit->add_option("--every", calibration->every, "Time between frames used (default 1 s)");
   fit->add_option("--cameras", calibration->cameras, "Use the first N cameras (default 4)")
-      ->check(CLI::PositiveNumber);
+      ->check(integer_in(1, 100000));
   fit->add_option("--width", calibration->width, "Image width (default 320)")
-      ->check(CLI::Range(16, 8192));
+      ->check(integer_in(16, 8192));
   fit->add_option("--height", calibration->height, "Image height (default 240)")
-      ->check(CLI::Range(16, 8192));
-  fit->add_option("--seed", calibration->seed, "Run seed (default: the scenario's)");
+      ->check(integer_in(16, 8192));
+  fit->add_option("--seed", calibration->seed, "Run seed (default: the scenario's)")
+      ->check(whole_number());
   fit->add_option("--field-of-view", calibration->field_of_view_deg,
                   "Horizontal field of view of every camera, degrees (default: each camera's "
                   "own); zoomed poses as when tracking")
-      ->check(CLI::Range(1.0, 179.0));
+      ->check(number_in(1.0, 179.0));
   fit->add_option("--scale-divisor", calibration->scale_divisor,
                   "Localiser kernel sizes l = (0.1..1) x h / D (default 7, the paper's; larger "
                   "for small pedestrians)")
-      ->check(CLI::Range(1.0, 1000.0));
+      ->check(number_in(1.0, 1000.0));
   fit->add_option("--out", calibration->out, "Model file to write (YAML)")->required();
   fit->callback([calibration, &result] { result = calibrate(*calibration); });
 }

@@ -1,10 +1,13 @@
 // The render pool renders exactly what a direct vision::renderer + imaging model renders,
-// whichever worker serves; `run --video` writes one mosaic frame per tick.
+// whichever worker serves; `run --video` writes one mosaic frame per tick, and each frame
+// shows what the cameras see at that tick.
 
 #include "actors/render_pool.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <opencv2/core.hpp>
 #include <opencv2/videoio.hpp>
@@ -14,6 +17,8 @@
 #include "actors/system_config.hpp"
 #include "actors/type_ids.hpp"
 #include "config/scenario_loader.hpp"
+#include "support/scene_checks.hpp"
+#include "vision/feed_mosaic.hpp"
 #include "vision/renderer.hpp"
 #include "world/crowd.hpp"
 #include "world/layout_loader.hpp"
@@ -103,12 +108,56 @@ TEST(render_pool, run_with_video_writes_one_frame_per_tick) {
   EXPECT_FALSE(std::filesystem::exists(outcome.output_dir / "video" / "feeds.partial.avi"));
   cv::VideoCapture video(file.string());
   ASSERT_TRUE(video.isOpened());
+
+  // What each frame must show: frame k is every camera's degraded view, at its default pose,
+  // of the crowd after k + 1 steps (the recorder's snapshot of clock tick k), rendered here
+  // directly, each camera's imaging model applied to its frames in tick order.
+  auto cameras = scenario.cameras;
+  std::sort(cameras.begin(), cameras.end(),
+            [](const auto& a, const auto& b) { return a.id < b.id; });
+  const auto station = world::station::load(world::layout_path(scenario));
+  world::crowd crowd(station, world::crowd_settings::from(scenario));
+  vision::renderer direct(station);
+  const auto layout = vision::feed_mosaic_layout::for_feeds(cameras.size(), 160, 120);
+  std::vector<vision::camera_view> views;
+  std::vector<vision::imaging_model> models;
+  for (const auto& c : cameras) {
+    views.push_back(
+        {vision::camera_placement::from(c), vision::ptz_camera::from(c).state(), 160, 120});
+    auto imaging = c.imaging;
+    imaging.width_px = 160;
+    imaging.height_px = 120;
+    models.push_back(vision::imaging_model::for_camera(imaging, scenario.run.seed, c.id));
+  }
+  const double tick_s = scenario.run.tick.count();
   std::int64_t frames = 0;
+  double worst_psnr_db = 1e9;
   cv::Mat image;
   while (video.read(image)) {
     ++frames;
-    EXPECT_EQ(image.cols, 4 * 160 + 3 * 2);
+    ASSERT_EQ(image.size(), layout.size());
+    crowd.step();
+    const auto& frame = *crowd.current();
+    const double t = frame.time().count();
+    for (std::size_t k = 0; k < cameras.size(); ++k) {
+      cv::Mat expected = direct.render(views[k], frame, t);
+      expected = models[k].interlaced()
+                     ? models[k].apply(expected, direct.render(views[k], frame, t + tick_s / 2.0))
+                     : models[k].apply(expected);
+      vision::label_feed(expected, cameras[k].id);
+      const cv::Mat tile = image(layout.tile(k));
+      const auto seen = test_support::statistics_of(tile);
+      EXPECT_TRUE(test_support::shows_a_scene(seen))
+          << "frame " << frames << " camera " << cameras[k].id << ": mean " << seen.mean
+          << ", stddev " << seen.stddev << ", lit " << seen.lit_fraction;
+      // The tile is the view itself, up to the video's JPEG compression.
+      const double psnr_db = cv::PSNR(tile, expected);
+      worst_psnr_db = std::min(worst_psnr_db, psnr_db);
+      EXPECT_GT(psnr_db, 25.0) << "frame " << frames << " camera " << cameras[k].id;
+    }
   }
+  std::printf("[ video    ] %lld frames; worst tile PSNR against a direct render %.1f dB\n",
+              static_cast<long long>(frames), worst_psnr_db);
   EXPECT_EQ(frames, outcome.result.ticks);
   EXPECT_EQ(outcome.result.ticks, 30);
 }

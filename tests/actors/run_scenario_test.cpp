@@ -6,8 +6,13 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
 
 #include "nlohmann/json.hpp"
+#include "world/crowd.hpp"
+#include "world/layout_loader.hpp"
 
 namespace argus::actors {
 namespace {
@@ -52,6 +57,37 @@ std::vector<nlohmann::json> events_of(const std::filesystem::path& p) {
   return out;
 }
 
+// Pedestrian ids by tick, as trajectories.csv lists them (`tick,t,id,...`); a row listed twice
+// shows up as a repeated id.
+std::map<std::int64_t, std::multiset<int>> rows_by_tick(const std::filesystem::path& csv) {
+  std::ifstream in(csv);
+  std::map<std::int64_t, std::multiset<int>> rows;
+  std::string line;
+  std::getline(in, line);  // header
+  while (std::getline(in, line)) {
+    std::istringstream fields(line);
+    std::string tick, t, id;
+    std::getline(fields, tick, ',');
+    std::getline(fields, t, ',');
+    std::getline(fields, id, ',');
+    rows[std::stoll(tick)].insert(std::stoi(id));
+  }
+  return rows;
+}
+
+// The pedestrians of world::crowd, the single-threaded reference, at ticks 0 to `ticks`.
+std::map<std::int64_t, std::multiset<int>> reference_pedestrians(const config::scenario& s,
+                                                                 std::int64_t ticks) {
+  world::crowd reference(world::station::load(world::layout_path(s)),
+                         world::crowd_settings::from(s));
+  std::map<std::int64_t, std::multiset<int>> ids;
+  for (std::int64_t k = 0; k <= ticks; ++k) {
+    if (k > 0) reference.step();
+    for (const auto& p : reference.current()->pedestrians()) ids[k].insert(p.id);
+  }
+  return ids;
+}
+
 TEST(run_scenario, runs_the_script_crashes_and_recovers_cameras_and_writes_outputs) {
   auto dir = std::filesystem::temp_directory_path() / ("argus-run-" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
@@ -87,8 +123,18 @@ TEST(run_scenario, runs_the_script_crashes_and_recovers_cameras_and_writes_outpu
   // 3 cameras, 3 links (all within range), the script, the fault injector, 1 recovered camera,
   // 1 crowd partition and the world coordinator.
   EXPECT_EQ(summary["participants"], 11);
-  // The crowd's ground truth, one row per pedestrian per tick (ticks 0 to 60).
-  EXPECT_TRUE(std::filesystem::exists(dir / "trajectories.csv"));
+  // The crowd's ground truth, one row per pedestrian per tick (ticks 0 to 60): the same
+  // pedestrians, each once, as the reference crowd has at every tick.
+  ASSERT_TRUE(std::filesystem::exists(dir / "trajectories.csv"));
+  const auto rows = rows_by_tick(dir / "trajectories.csv");
+  const auto expected = reference_pedestrians(three_cameras(dir), 60);
+  ASSERT_EQ(rows.size(), 61u);
+  ASSERT_GT(expected.at(0).size(), 0u);
+  for (const auto& [tick, ids] : expected) {
+    const auto listed = rows.count(tick) ? rows.at(tick) : std::multiset<int>{};
+    EXPECT_EQ(listed, ids) << "tick " << tick << ": " << listed.size() << " rows for " << ids.size()
+                           << " pedestrians";
+  }
   EXPECT_EQ(summary["network"]["links"], 3);
   EXPECT_GT(summary["network"]["totals"]["delivered"].get<int>(), 0);
   EXPECT_EQ(summary["network"]["invariant_holds"], true);

@@ -71,9 +71,13 @@ TEST(emulated_sensor_fidelity, rates_match_the_pixel_pipeline_on_a_held_out_run)
   ASSERT_GT(truth.trials, 500);
   EXPECT_EQ(truth.trials, emulation.trials);
   EXPECT_NEAR(emulation.miss, truth.miss, 0.07);
-  // A calibration that means something: most pedestrians are found (it was 0.97 missed at
-  // the default wide poses with the paper's kernels).
-  EXPECT_LT(truth.miss, 0.7);
+  // What the pixel pipeline measures here: it misses a little over half the visible
+  // pedestrians (0.58 in this window), far fewer than the 0.97 it missed at the default wide
+  // poses with the paper's kernels, and it finds some: the bounds hold 0.58 with room for the
+  // window-to-window spread above, and fail for a pipeline that finds nearly everyone or
+  // nearly no one.
+  EXPECT_GT(truth.miss, 0.45);
+  EXPECT_LT(truth.miss, 0.70);
   EXPECT_NEAR(emulation.confusion, truth.confusion, 0.08);
   std::printf(
       "held out: %d trials; miss pixel %.3f emulated %.3f; confusion pixel %.3f emulated "

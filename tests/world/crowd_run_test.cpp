@@ -3,8 +3,8 @@
 //   arcade --portals--> waiting room --portals--> concourse --stairs--> platforms
 //   (street)           (booths, benches, vending)              (gone)
 //
-// No two bodies overlap, no one crosses a wall, nobody is stuck, ticket lines are served in
-// (join tick, id) order, and every goal kind is completed.
+// No two bodies overlap, no one crosses a wall, walkers make progress toward their goals,
+// ticket lines are served in (join tick, id) order, and every goal kind is completed.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -37,6 +37,11 @@ struct run_statistics {
   double min_wall_gap_m = std::numeric_limits<double>::infinity();
   int wall_crossings = 0;
   double longest_stall_s = 0.0;
+  // Walking progress: the walking distance to the goal gained over each 10 s a pedestrian
+  // walks toward one goal without stopping to wait.
+  long progress_windows = 0;
+  long slow_windows = 0;  // under 1 m gained in 10 s
+  double progress_m = 0.0;
   std::array<int, goal_kind_count> completed{};
   int started = 0;
   int abandoned = 0;
@@ -75,6 +80,13 @@ class crowd_run : public testing::Test {
       double since_s = 0.0;
     };
     std::map<int, watch> watches;
+    struct progress_window {
+      std::uint32_t serial = 0;
+      double start_m = 0.0;
+      int ticks = -1;  // -1: no window open
+    };
+    constexpr int window_ticks = 10 * 15;
+    std::map<int, progress_window> windows;
     std::map<std::pair<int, int>, std::uint64_t> joined;  // (counter, id) -> join tick
     std::map<int, std::pair<std::uint64_t, int>> last_served;
     const int ticks = 10 * 60 * 15;
@@ -98,6 +110,16 @@ class crowd_run : public testing::Test {
           for (const auto index : st.segments_near(old->position)) {
             if (segments_cross(old->position, p.position, st.segments()[index])) ++s.wall_crossings;
           }
+        }
+        auto& window = windows[p.id];
+        if (window.ticks < 0 || window.serial != p.goal_serial || is_waiting(p.doing)) {
+          window = {p.goal_serial, p.distance_to_goal_m, is_waiting(p.doing) ? -1 : 0};
+        } else if (++window.ticks == window_ticks) {
+          const double gained = window.start_m - p.distance_to_goal_m;
+          ++s.progress_windows;
+          s.progress_m += gained;
+          if (gained < 1.0) ++s.slow_windows;
+          window = {p.goal_serial, p.distance_to_goal_m, 0};
         }
         auto& w = watches[p.id];
         if (w.serial != p.goal_serial || is_waiting(p.doing)) {
@@ -158,6 +180,12 @@ class crowd_run : public testing::Test {
         s.min_gap_m, s.pair_samples, s.close_pairs, s.min_wall_gap_m, s.wall_crossings,
         s.longest_stall_s, s.started, s.abandoned, s.served, s.longest_ticket_line,
         s.min_population, s.max_population, s.left);
+    std::printf(
+        "[ stats    ] progress: %ld windows of 10 s walking, %.2f m/s toward the goal on "
+        "average, %ld (%.2f%%) gained under 1 m\n",
+        s.progress_windows, s.progress_m / (10.0 * static_cast<double>(s.progress_windows)),
+        s.slow_windows,
+        100.0 * static_cast<double>(s.slow_windows) / static_cast<double>(s.progress_windows));
     for (std::size_t g = 0; g < goal_kind_count; ++g) {
       std::printf("[ stats    ] %s: completed %d, abandoned %d\n",
                   std::string(to_string(static_cast<goal_kind>(g))).c_str(), s.completed[g],
@@ -183,9 +211,14 @@ TEST_F(crowd_run, nobody_passes_through_a_wall) {
   EXPECT_GE(stats_->min_wall_gap_m, -1e-9);
 }
 
-TEST_F(crowd_run, nobody_is_stuck) {
-  // Walking pedestrians gain 0.5 m on their goal at least every 20 s (then they re-plan).
-  EXPECT_LE(stats_->longest_stall_s, 21.0);
+TEST_F(crowd_run, walkers_make_progress_toward_their_goals) {
+  // Measured over 10 s windows of walking (not the stall limit, which holds by construction:
+  // a walker who gains nothing for 20 s abandons the goal). Preferred speeds are 1.0-1.5 m/s;
+  // this run gains 1.20 m/s on average and 1.1% of its windows gain under 1 m.
+  ASSERT_GT(stats_->progress_windows, 1000);
+  const double windows = static_cast<double>(stats_->progress_windows);
+  EXPECT_GT(stats_->progress_m / (10.0 * windows), 1.0);
+  EXPECT_LT(static_cast<double>(stats_->slow_windows) / windows, 0.03);
   EXPECT_LT(stats_->abandoned, stats_->started / 10);
 }
 

@@ -12,6 +12,7 @@
 #include "world/crowd.hpp"
 #include "world/layout_loader.hpp"
 #include "world/plan_view.hpp"
+#include "world/plan_view_checks.hpp"
 #include "world/trajectory_writer.hpp"
 
 namespace argus::world {
@@ -77,6 +78,18 @@ TEST(plan_view, draws_the_station_with_cameras_and_pedestrians) {
   // Portals are yellow (BGR 0, 215, 255): the arcade's street portal centre is.
   const cv::Vec3b portal = image.at<cv::Vec3b>(24 + (100 - 50) * 7, 24 + 199 * 7);
   EXPECT_EQ(portal, cv::Vec3b(0, 215, 255));
+  // Walls, cameras, pedestrians and their trails where the station and the crowd put them.
+  const auto found =
+      inspect_plan_view(image, *where, scenario.cameras, *world.current(), trails.trails());
+  found.print();
+  ASSERT_GT(found.walls, 300);
+  EXPECT_GE(found.walls_drawn, found.walls * 8 / 10);
+  ASSERT_EQ(found.cameras, static_cast<int>(scenario.cameras.size()));
+  EXPECT_GE(found.cameras_drawn, found.cameras - 1);
+  ASSERT_GE(found.pedestrians, 50);
+  EXPECT_GE(found.pedestrians_drawn, found.pedestrians * 9 / 10);
+  ASSERT_GT(found.trails, 50);
+  EXPECT_GE(found.trails_drawn * 3, found.trails * 2);
 }
 
 }  // namespace
