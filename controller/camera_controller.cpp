@@ -98,12 +98,16 @@ std::vector<int> camera_controller::members() const {
   return out;
 }
 
+double camera_controller::decayed(double relevance, std::int64_t age) const {
+  // Footnote 2: relevance decays without fresh evidence, to zero over the member failure
+  // timeout.
+  const double horizon = static_cast<double>(ticks(settings_.member_failure_timeout));
+  return relevance * std::max(0.0, 1.0 - static_cast<double>(age) / horizon);
+}
+
 double camera_controller::relevance(std::int64_t now) const {
   if (!task_) return 0.0;
-  // Footnote 2: relevance decays without fresh evidence; here, since the last sighting.
-  const double age = static_cast<double>(now - seen_tick_);
-  const double horizon = static_cast<double>(ticks(settings_.member_failure_timeout));
-  return seen_relevance_ * std::max(0.0, 1.0 - age / horizon);
+  return decayed(seen_relevance_, now - seen_tick_);  // since the last sighting
 }
 
 double camera_controller::relevance_of(const cv::Rect2d& box, bool busy) const {
@@ -411,14 +415,25 @@ void camera_controller::start_task(const protocol::task_description& task, group
   seen_relevance_ = relevance;
   seen_tick_ = seen;
   fsm_.reset();
-  members_.clear();
-  auction_.reset();
-  csp_.reset();
+  forget_group();
   last_bids_.clear();
   relayed_for_.clear();
   relayed_by_.clear();
-  negotiator_.reset();
   next_auction_at_ = now_;
+}
+
+void camera_controller::forget_group() {
+  members_.clear();
+  auction_.reset();
+  csp_.reset();
+  negotiator_.reset();
+}
+
+void camera_controller::emit_leader_changed(int leader, int previous, std::string_view reason,
+                                            controller_output& out) const {
+  emit(out, "leader_changed",
+       fmt::format(R"("task":{},"leader":{},"previous":{},"reason":"{}")", task_->task, leader,
+                   previous, reason));
 }
 
 void camera_controller::leave_task(std::string_view reason, controller_output& out) {
@@ -429,24 +444,16 @@ void camera_controller::leave_task(std::string_view reason, controller_output& o
   if (role_ == group_role::leader && members_.empty())
     emit(out, "group_vanished", fmt::format(R"("task":{})", task_->task));
   task_.reset();
-  members_.clear();
-  auction_.reset();
-  csp_.reset();
-  negotiator_.reset();
+  forget_group();
 }
 
 void camera_controller::become_leader(std::string_view reason, controller_output& out) {
   const int previous = leader_;
   role_ = group_role::leader;
   leader_ = me_.id;
-  members_.clear();
-  auction_.reset();
-  csp_.reset();
-  negotiator_.reset();
+  forget_group();
   next_auction_at_ = now_;
-  emit(out, "leader_changed",
-       fmt::format(R"("task":{},"leader":{},"previous":{},"reason":"{}")", task_->task, me_.id,
-                   previous, reason));
+  emit_leader_changed(me_.id, previous, reason, out);
 }
 
 void camera_controller::follow_leader(int leader, std::string_view reason, controller_output& out) {
@@ -454,13 +461,8 @@ void camera_controller::follow_leader(int leader, std::string_view reason, contr
   role_ = group_role::member;
   leader_ = leader;
   last_leader_status_ = now_;
-  members_.clear();
-  auction_.reset();
-  csp_.reset();
-  negotiator_.reset();
-  emit(out, "leader_changed",
-       fmt::format(R"("task":{},"leader":{},"previous":{},"reason":"{}")", task_->task, leader,
-                   previous, reason));
+  forget_group();
+  emit_leader_changed(leader, previous, reason, out);
   // At once, so that the new leader counts this node (and this node's members follow).
   send(protocol::broadcast, own_status(), out);
 }
@@ -543,14 +545,12 @@ void camera_controller::lead(controller_output& out) {
   // Drop members that went silent or whose relevance decayed below the membership threshold.
   for (auto it = members_.begin(); it != members_.end();) {
     const auto age = now_ - it->second.last_status;
-    const double decayed =
-        it->second.relevance *
-        std::max(0.0, 1.0 - static_cast<double>(age) / static_cast<double>(silence));
     const bool settled = now_ - it->second.joined > silence;
-    const char* why = age >= silence ? "silent"
-                      : settled && decayed < settings_.membership_relevance_threshold
-                          ? "relevance_low"
-                          : nullptr;
+    const char* why =
+        age >= silence ? "silent"
+        : settled && decayed(it->second.relevance, age) < settings_.membership_relevance_threshold
+            ? "relevance_low"
+            : nullptr;
     if (why == nullptr) {
       ++it;
       continue;

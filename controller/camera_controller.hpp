@@ -125,6 +125,10 @@ class camera_controller {
   void become_leader(std::string_view reason, controller_output& out);
   void follow_leader(int leader, std::string_view reason, controller_output& out);
   void met_other_leader(int other, controller_output& out);
+  // Forgets the group this node led or followed: members, auction, conflict, negotiation.
+  void forget_group();
+  void emit_leader_changed(int leader, int previous, std::string_view reason,
+                           controller_output& out) const;
   void absorb(int camera, controller_output& out);
 
   // Leader's work.
@@ -142,6 +146,7 @@ class camera_controller {
   void send(int to, protocol::group_message m, controller_output& out) const;
   void emit(controller_output& out, std::string_view kind, const std::string& fields) const;
   double relevance_of(const cv::Rect2d& box, bool busy) const;
+  double decayed(double relevance, std::int64_t age) const;
   std::int64_t ticks(config::seconds d) const;
   bool locked() const;
 
