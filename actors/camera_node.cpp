@@ -73,6 +73,8 @@ struct camera_node_state {
   caf::actor clock;
   controller::controller_input input;
   std::vector<due_task> queries;
+  // The world as this turn senses it (read once per turn from the board).
+  std::shared_ptr<const world::snapshot> snap;
   bool idle_behaviour = true;
 
   caf::behavior idle;
@@ -168,7 +170,7 @@ caf::behavior& behaviour_for(camera_node_state& st) {
 void finish_turn(node_actor* self, const cv::Mat& image) {
   auto& st = self->state;
   auto& ctx = *st.ctx;
-  const auto snap = st.world ? st.world->board->latest() : nullptr;
+  const auto snap = std::move(st.snap);
   if (snap && !st.looks.empty()) {
     if (st.pixels && !image.empty()) {
       st.input.looks = st.pixels->look(image, st.looks);
@@ -237,7 +239,8 @@ void take_turn(node_actor* self, std::int64_t tick, std::uint8_t p, const caf::a
     if (st.tasks[st.next_task].tick >= st.first_turn) st.queries.push_back(st.tasks[st.next_task]);
   // Only a node whose state needs an image asks for one: an idle node looks at nothing.
   const bool sense = st.world && (!st.queries.empty() || (!st.idle_behaviour && !st.looks.empty()));
-  const auto snap = st.world ? st.world->board->latest() : nullptr;
+  st.snap = sense ? st.world->board->latest() : nullptr;
+  const auto& snap = st.snap;
   if (!sense || !st.pixels || !snap) {
     finish_turn(self, {});
     return;
@@ -295,11 +298,11 @@ caf::behavior camera_node(node_actor* self, const config::scenario& scenario,
   st.links = std::move(links);
   st.outbox = link_outbox{
       protocol::link_model::min_delay_ticks(scenario.network, scenario.run.tick.count())};
-  st.controller = std::make_unique<controller::camera_controller>(
-      controller::node_identity::from(camera), scenario);
+  const auto identity = controller::node_identity::from(camera);
+  st.frame = identity.frame;
+  st.controller = std::make_unique<controller::camera_controller>(identity, scenario);
   st.head.emplace(vision::ptz_camera::from(camera));
   st.placement = vision::camera_placement::from(camera);
-  st.frame = controller::node_identity::from(camera).frame;
   st.tick_length = scenario.run.tick;
   st.world = std::move(world);
   if (st.world) {

@@ -25,8 +25,7 @@ std::vector<controller::look_result> emulated_looks::look(
     const auto followed = following_.find(l.task);
     for (const auto& v : seen) {
       const auto* who = frame.find(v.id);
-      const double match =
-          vision::normalized_intersection(wanted, vision::appearance_signature(who->look));
+      const double match = vision::normalized_intersection(wanted, signature_of(who->look));
       if (match < min_match_) continue;
       if (followed != following_.end() && followed->second == v.id) {
         best = v.id;
@@ -54,10 +53,16 @@ std::vector<controller::look_result> emulated_looks::look(
   return out;
 }
 
+const vision::color_histogram& emulated_looks::signature_of(const world::appearance& look) {
+  for (const auto& [known, signature] : signatures_)
+    if (known == look) return signature;
+  return signatures_.emplace_back(look, vision::appearance_signature(look)).second;
+}
+
 protocol::signature emulated_looks::acquire(controller::task_id task, const world::snapshot& frame,
                                             int id) {
   following_[task] = id;
-  return to_signature(vision::appearance_signature(frame.find(id)->look));
+  return to_signature(signature_of(frame.find(id)->look));
 }
 
 }  // namespace argus::sensing

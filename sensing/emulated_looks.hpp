@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <deque>
 #include <map>
 #include <vector>
 
@@ -34,8 +35,13 @@ class emulated_looks {
   protocol::signature acquire(controller::task_id task, const world::snapshot& frame, int id);
 
  private:
+  const vision::color_histogram& signature_of(const world::appearance& look);
+
   vision::emulated_sensor sensor_;
   double min_match_;
+  // Signatures by appearance, made once: palettes are small. A deque, since references to
+  // its elements must survive later insertions.
+  std::deque<std::pair<world::appearance, vision::color_histogram>> signatures_;
   std::map<controller::task_id, int> following_;
 };
 
