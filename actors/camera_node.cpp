@@ -8,8 +8,11 @@
 #include "actors/participant_ids.hpp"
 #include "actors/tick_context.hpp"
 #include "actors/type_ids.hpp"
+#include "config/enum_names.hpp"
 #include "config/ticks.hpp"
 #include "controller/camera_controller.hpp"
+#include "eval/oracle_assignment.hpp"
+#include "eval/truth_label.hpp"
 #include "fmt/format.h"
 #include "protocol/group_messages.hpp"
 #include "protocol/link_model.hpp"
@@ -17,6 +20,7 @@
 #include "sensing/emulated_looks.hpp"
 #include "sensing/operator_view.hpp"
 #include "sensing/pixel_sensor.hpp"
+#include "sensing/task_targets.hpp"
 #include "vision/imaging_model.hpp"
 
 namespace argus::actors {
@@ -67,6 +71,23 @@ struct camera_node_state {
   std::vector<due_task> tasks;
   std::size_t next_task = 0;
   std::int64_t first_turn = -1;
+  // Operator cancellations for tasks issued through this camera: (tick, task), by tick.
+  std::vector<std::pair<std::int64_t, protocol::task_id>> cancels;
+  std::size_t next_cancel = 0;
+  // first_to_enter tasks waiting for someone to enter the view.
+  struct watch {
+    due_task task;
+    sensing::entry_watch entries;
+  };
+  std::vector<watch> watches;
+  // The evaluation's record of this node's frames (simulator side; null = not evaluated).
+  std::shared_ptr<eval::observation_log> log;
+  std::shared_ptr<const world::snapshot> eval_snap;
+  // The oracle strategy: the task the central oracle gives this camera, and the target's
+  // signature once the camera has seen her.
+  config::camera_settings settings;
+  std::optional<std::uint32_t> oracle_task;
+  std::map<std::uint32_t, protocol::signature> oracle_signatures;
 
   // The turn in progress (it may wait for a rendered frame).
   std::optional<tick_context> ctx;
@@ -128,30 +149,192 @@ vision::camera_view view_of(const camera_node_state& st) {
   return view;
 }
 
-// The operator's tasks for this camera: its signature from the camera's own sensing, or a
+// The operator's task `q` resolved to a pedestrian and her box in this frame, or the reason
+// it is refused.
+struct resolved_task {
+  int pedestrian = 0;
+  std::optional<cv::Rect2d> box;
+  std::string_view refusal;
+};
+
+resolved_task resolve(camera_node_state& st, const due_task& q, const world::snapshot* snap,
+                      int entered) {
+  resolved_task out;
+  if (snap == nullptr || !st.world) {
+    out.refusal = "no_frame";
+    return out;
+  }
+  const auto view = view_of(st);
+  switch (q.request.by) {
+    case config::task_target::pedestrian:
+      out.pedestrian = q.request.pedestrian;
+      break;
+    case config::task_target::pixel:
+      out.pedestrian = sensing::pedestrian_at(
+          *snap, *st.world->station, view, cv::Point2d(q.request.pixel.x_px, q.request.pixel.y_px));
+      if (out.pedestrian == 0) {
+        out.refusal = "no_pedestrian_at_pixel";
+        return out;
+      }
+      break;
+    case config::task_target::first_to_enter:
+      out.pedestrian = entered;
+      break;
+  }
+  out.box = sensing::operator_box(*snap, *st.world->station, view, out.pedestrian);
+  if (!out.box) out.refusal = "not_in_view";
+  return out;
+}
+
+eval::target_choice choice_of(config::task_target by) {
+  switch (by) {
+    case config::task_target::pedestrian:
+      return eval::target_choice::pedestrian;
+    case config::task_target::pixel:
+      return eval::target_choice::pixel;
+    case config::task_target::first_to_enter:
+      return eval::target_choice::first_to_enter;
+  }
+  return eval::target_choice::pedestrian;
+}
+
+// An operator's task for this camera: its signature from the camera's own sensing, or a
 // refusal when the pedestrian is not in view.
+void take_query(camera_node_state& st, const due_task& q, const world::snapshot* snap,
+                const cv::Mat& image, int entered = 0) {
+  auto r = resolve(st, q, snap, entered);
+  if (r.refusal.empty() && st.pixels && image.empty()) r.refusal = "no_frame";
+  if (!r.refusal.empty()) {
+    st.ctx->emit("task_refused",
+                 fmt::format(R"("camera":{},"task":{},"pedestrian":{},"reason":"{}")", st.camera_id,
+                             q.task, r.pedestrian, r.refusal));
+    return;
+  }
+  st.ctx->emit("task_target",
+               fmt::format(R"("camera":{},"task":{},"pedestrian":{},"by":"{}")", st.camera_id,
+                           q.task, r.pedestrian, config::yaml_name(q.request.by)));
+  if (st.log)
+    st.log->add_origin({q.task, r.pedestrian, st.camera_id, static_cast<std::int64_t>(snap->tick()),
+                        choice_of(q.request.by)});
+  if (st.world->oracle) return;  // the oracle assigns cameras itself
+  controller::operator_query query;
+  query.task.task = q.task;
+  query.task.min_cameras = static_cast<std::uint16_t>(q.request.cameras_wanted);
+  query.task.max_cameras = static_cast<std::uint16_t>(q.request.cameras_max());
+  query.box = *r.box;
+  query.task.target = st.pixels ? st.pixels->acquire(q.task, image, cv::Rect(*r.box))
+                                : st.emulated->acquire(q.task, *snap, r.pedestrian);
+  st.input.queries.push_back(std::move(query));
+}
+
 void take_queries(camera_node_state& st, const world::snapshot* snap, const cv::Mat& image) {
   for (const auto& q : st.queries) {
-    std::optional<cv::Rect2d> box;
-    if (snap != nullptr && st.world)
-      box = sensing::operator_box(*snap, *st.world->station, view_of(st), q.request.pedestrian);
-    if (!box || (st.pixels && image.empty())) {
-      st.ctx->emit(
-          "task_refused",
-          fmt::format(R"("camera":{},"task":{},"pedestrian":{},"reason":"{}")", st.camera_id,
-                      q.task, q.request.pedestrian, !box ? "not_in_view" : "no_frame"));
+    if (q.request.by == config::task_target::first_to_enter) {
+      st.watches.push_back({q, {}});
+      if (snap && st.world)
+        st.watches.back().entries.prime(sensing::in_view(*snap, *st.world->station, view_of(st)));
       continue;
     }
-    controller::operator_query query;
-    query.task.task = q.task;
-    query.task.min_cameras = static_cast<std::uint16_t>(q.request.cameras_wanted);
-    query.task.max_cameras = static_cast<std::uint16_t>(q.request.cameras_max());
-    query.box = *box;
-    query.task.target = st.pixels ? st.pixels->acquire(q.task, image, cv::Rect(*box))
-                                  : st.emulated->acquire(q.task, *snap, q.request.pedestrian);
-    st.input.queries.push_back(std::move(query));
+    take_query(st, q, snap, image);
   }
   st.queries.clear();
+  if (!snap || !st.world) return;
+  for (auto it = st.watches.begin(); it != st.watches.end();) {
+    const int entered = it->entries.step(sensing::in_view(*snap, *st.world->station, view_of(st)));
+    if (entered == 0) {
+      ++it;
+      continue;
+    }
+    take_query(st, it->task, snap, image, entered);
+    it = st.watches.erase(it);
+  }
+}
+
+// The evaluation's record of this frame: pose, state and the task's looks labelled with whom
+// they show (simulator knowledge; the controller never sees it).
+void record_frame(camera_node_state& st) {
+  if (!st.log || !st.eval_snap || !st.world) return;
+  eval::camera_frame frame;
+  frame.tick = static_cast<std::int64_t>(st.eval_snap->tick());
+  frame.camera = st.camera_id;
+  frame.pose = st.head->state();
+  frame.state = static_cast<eval::frame_state>(st.controller->state());
+  auto task = st.controller->task();
+  if (st.world->oracle) {
+    task = st.oracle_task;
+    frame.state = task ? eval::frame_state::performing_task : eval::frame_state::idle;
+  }
+  std::vector<vision::pedestrian_view> visible;
+  bool looked = false;
+  for (const auto& r : st.input.looks) {
+    if (!task || r.task != *task) continue;  // a bidder's look is not the group's
+    if (!looked)
+      visible = vision::visible_pedestrians(*st.eval_snap, *st.world->station, view_of(st));
+    looked = true;
+    eval::look_record rec;
+    rec.task = r.task;
+    rec.leader = st.world->oracle ? false : st.controller->role() == controller::group_role::leader;
+    rec.found = r.found;
+    rec.score = r.score;
+    if (r.found) {
+      rec.box = r.box;
+      const auto target = st.log->target_of(r.task).value_or(0);
+      const auto label =
+          eval::label_box(r.box, target, visible, st.frame.width_px, st.frame.height_px);
+      rec.truth = label.truth;
+      rec.iou = label.iou;
+      rec.observed = label.observed;
+    }
+    frame.looks.push_back(rec);
+  }
+  if (st.log->with_visible()) {
+    if (!looked)
+      visible = vision::visible_pedestrians(*st.eval_snap, *st.world->station, view_of(st));
+    const cv::Rect2d image(0.0, 0.0, st.frame.width_px, st.frame.height_px);
+    for (const auto& v : visible) {
+      const auto shown = v.box & image;
+      if (shown.area() <= 0.0) continue;
+      frame.visible.push_back({v.id, shown, 1.0 - v.occlusion});
+    }
+  }
+  st.log->add_frame(std::move(frame));
+}
+
+// The oracle strategy: the central oracle's order for this frame. The camera points where the
+// truth says she is and tracks her with its own sensor, from a signature taken from its own
+// view the first time it sees her.
+void take_oracle_order(camera_node_state& st, const world::snapshot& frame) {
+  auto task = st.world->oracle->task_of(st.camera_id, frame);
+  if (task == st.oracle_task) return;
+  if (st.oracle_task)
+    st.ctx->emit("left_task",
+                 fmt::format(R"("camera":{},"task":{},"reason":"oracle","role":"member")",
+                             st.camera_id, *st.oracle_task));
+  if (task)
+    st.ctx->emit("joined", fmt::format(R"("camera":{},"task":{},"leader":0,"reassign":false)",
+                                       st.camera_id, *task));
+  st.oracle_task = task;
+}
+
+void follow_oracle(camera_node_state& st, const world::snapshot* snap, const cv::Mat& image) {
+  st.looks.clear();
+  if (!st.oracle_task || snap == nullptr) {
+    st.head->command(vision::ptz_state{st.settings.pan_deg, st.settings.tilt_deg,
+                                       st.settings.field_of_view_deg});
+    return;
+  }
+  const auto task = *st.oracle_task;
+  const int target = st.log->target_of(task).value_or(0);
+  st.head->command(eval::oracle_pose(st.settings, *snap, target));
+  auto sig = st.oracle_signatures.find(task);
+  if (sig == st.oracle_signatures.end()) {
+    const auto box = sensing::operator_box(*snap, *st.world->station, view_of(st), target);
+    if (!box || (st.pixels && image.empty())) return;
+    const auto signature = st.pixels ? st.pixels->acquire(task, image, cv::Rect(*box))
+                                     : st.emulated->acquire(task, *snap, target);
+    sig = st.oracle_signatures.emplace(task, signature).first;
+  }
+  st.looks.push_back({task, sig->second});
 }
 
 caf::behavior& behaviour_for(camera_node_state& st) {
@@ -179,17 +362,24 @@ void finish_turn(node_actor* self, const cv::Mat& image) {
     }
   }
   take_queries(st, snap.get(), image);
+  record_frame(st);
+  st.eval_snap.reset();
   st.input.pose = st.head->state();
   auto out = st.controller->step(st.input);
   st.input = {};
   for (auto& m : out.messages) {
     const auto kind = protocol::kind_of(m.message);
+    if (st.log) st.log->add_sent(protocol::task_of(m.message), kind);
     st.network->send(m.destination, std::string(kind), protocol::encode(m.message));
   }
   for (auto& e : out.events) ctx.emit(std::move(e.kind), std::move(e.fields_json));
-  if (out.command) st.head->command(*out.command);
+  if (st.world && st.world->oracle) {
+    follow_oracle(st, snap.get(), image);
+  } else {
+    if (out.command) st.head->command(*out.command);
+    st.looks = std::move(out.looks);
+  }
   st.head->step(st.tick_length);
-  st.looks = std::move(out.looks);
   st.network->tick(ctx.tick());
   flush_network(self, ctx);
   self->send(st.clock, std::move(*st.ctx).finish());
@@ -237,9 +427,19 @@ void take_turn(node_actor* self, std::int64_t tick, std::uint8_t p, const caf::a
   // Tasks the operator gave while this camera was down are lost with it.
   for (; st.next_task < st.tasks.size() && st.tasks[st.next_task].tick <= tick; ++st.next_task)
     if (st.tasks[st.next_task].tick >= st.first_turn) st.queries.push_back(st.tasks[st.next_task]);
-  // Only a node whose state needs an image asks for one: an idle node looks at nothing.
-  const bool sense = st.world && (!st.queries.empty() || (!st.idle_behaviour && !st.looks.empty()));
-  st.snap = sense ? st.world->board->latest() : nullptr;
+  for (; st.next_cancel < st.cancels.size() && st.cancels[st.next_cancel].first <= tick;
+       ++st.next_cancel) {
+    const auto task = st.cancels[st.next_cancel].second;
+    st.input.cancels.push_back(task);
+    std::erase_if(st.watches, [&](const auto& w) { return w.task.task == task; });
+  }
+  // Only a node whose state needs an image asks for one: an idle node looks at nothing (but
+  // for the operator's task, or a watch for the first to enter its view).
+  if (st.log && st.world) st.eval_snap = st.world->board->latest();
+  if (st.world && st.world->oracle && st.eval_snap) take_oracle_order(st, *st.eval_snap);
+  const bool sense = st.world && (!st.queries.empty() || !st.watches.empty() ||
+                                  (!st.idle_behaviour && !st.looks.empty()) || st.oracle_task);
+  st.snap = sense ? (st.eval_snap ? st.eval_snap : st.world->board->latest()) : nullptr;
   const auto& snap = st.snap;
   if (!sense || !st.pixels || !snap) {
     finish_turn(self, {});
@@ -293,6 +493,7 @@ caf::behavior camera_node(node_actor* self, const config::scenario& scenario,
   auto& st = self->state;
   st.info = camera_participant(camera);
   st.camera_id = camera.id;
+  st.settings = camera;
   st.ptz = camera.type == config::camera_type::ptz;
   st.network = std::make_unique<protocol::node_network>(camera.id, neighbours_of(links), scenario);
   st.links = std::move(links);
@@ -305,6 +506,7 @@ caf::behavior camera_node(node_actor* self, const config::scenario& scenario,
   st.placement = vision::camera_placement::from(camera);
   st.tick_length = scenario.run.tick;
   st.world = std::move(world);
+  if (st.world) st.log = st.world->log;
   if (st.world) {
     if (scenario.sensing.mode == config::sensing_mode::pixels) {
       st.pixels.emplace();
@@ -318,7 +520,11 @@ caf::behavior camera_node(node_actor* self, const config::scenario& scenario,
     if (t.camera != camera.id) continue;
     st.tasks.push_back(
         {config::to_ticks(t.at, scenario.run.tick), static_cast<protocol::task_id>(i), t});
+    if (t.cancel_at)
+      st.cancels.emplace_back(config::to_ticks(*t.cancel_at, scenario.run.tick),
+                              static_cast<protocol::task_id>(i));
   }
+  std::sort(st.cancels.begin(), st.cancels.end());
   std::stable_sort(st.tasks.begin(), st.tasks.end(),
                    [](const auto& a, const auto& b) { return a.tick < b.tick; });
   // What the node sent before it went down was on the wire already: it still reaches the

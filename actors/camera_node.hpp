@@ -4,10 +4,12 @@
 #include <map>
 
 #include "actors/participant_info.hpp"
+#include "actors/oracle_board.hpp"
 #include "actors/snapshot_board.hpp"
 #include "caf/actor.hpp"
 #include "caf/fwd.hpp"
 #include "config/scenario.hpp"
+#include "eval/observation_log.hpp"
 #include "vision/sensor_model.hpp"
 #include "world/station.hpp"
 
@@ -32,6 +34,10 @@ struct camera_world {
   /// The render pool's front; null unless sensing is by pixels.
   caf::actor render_pool;
   vision::sensor_model sensor_model;
+  /// Where nodes record their frames for the evaluation against ground truth; null = none.
+  std::shared_ptr<eval::observation_log> log;
+  /// The central oracle's orders (control_strategy::oracle only).
+  std::shared_ptr<oracle_board> oracle;
 };
 
 /// How camera `camera` takes part in the clock: phase cameras, every tick (it senses each frame).

@@ -18,6 +18,10 @@
 #include "actors/video_recorder.hpp"
 #include "actors/world_coordinator.hpp"
 #include "config/ticks.hpp"
+#include "eval/metrics.hpp"
+#include "eval/mot_export.hpp"
+#include "eval/run_files.hpp"
+#include "nlohmann/json.hpp"
 #include "protocol/topology.hpp"
 #include "world/layout_loader.hpp"
 
@@ -33,6 +37,28 @@ std::filesystem::path sensor_model_path(const config::scenario& scenario) {
   if (file.is_absolute() || scenario.source_path.empty()) return file;
   return std::filesystem::path(scenario.source_path).parent_path() / file;
 }
+
+namespace {
+
+// The run measured against ground truth: metrics.json and the files beside it.
+void evaluate_run(const config::scenario& scenario, const world::station& station,
+                  const eval::observation_log::contents& log, std::int64_t end_tick,
+                  const run_options& options, run_outcome& outcome) {
+  const auto& dir = outcome.output_dir;
+  const double tick_s = scenario.run.tick.count();
+  const auto events = eval::read_events(dir / "events.jsonl");
+  outcome.evaluation = eval::evaluate(scenario, station, log, events, end_tick);
+  const auto metrics = eval::metrics_json(scenario, outcome.evaluation, outcome.result.wall_seconds,
+                                          outcome.result.virtual_seconds);
+  eval::write_whole_file(dir / "metrics.json",
+                         [&](std::ostream& out) { out << metrics.dump(2) << "\n"; });
+  eval::write_tracks(dir / "tracks.csv", log, tick_s);
+  eval::write_targets(dir / "targets.csv", outcome.evaluation, tick_s);
+  eval::write_poses(dir / "poses.csv", log, tick_s);
+  if (options.mot) eval::write_mot(dir / "mot", scenario, log, end_tick);
+}
+
+}  // namespace
 
 run_outcome run_scenario(const config::scenario& scenario, bool show_progress) {
   run_options options;
@@ -57,6 +83,7 @@ run_outcome run_scenario(const config::scenario& scenario, const run_options& op
   caf::actor video_participant;
   world_run_settings world_settings;
   world_settings.station = world::station::load(world::layout_path(scenario));
+  const auto world_settings_station = world_settings.station;
   render_pool pool;
   const bool pixels = scenario.sensing.mode == config::sensing_mode::pixels;
   if (options.video || pixels)
@@ -68,6 +95,11 @@ run_outcome run_scenario(const config::scenario& scenario, const run_options& op
   if (pixels) cameras_world->render_pool = pool.front;
   if (!scenario.sensing.sensor_model.empty())
     cameras_world->sensor_model = vision::load_sensor_model(sensor_model_path(scenario).string());
+  auto log = std::make_shared<eval::observation_log>(options.mot);
+  cameras_world->log = log;
+  cameras_world->board->record_targets_in(log);
+  if (scenario.controller.strategy == config::control_strategy::oracle)
+    cameras_world->oracle = std::make_shared<oracle_board>(scenario, world_settings.station, log);
   world_settings.board = cameras_world->board;
   if (options.video) {
     video_settings vs;
@@ -114,7 +146,7 @@ run_outcome run_scenario(const config::scenario& scenario, const run_options& op
   // Joins and link attachments go out from this thread, in this order, before `start`:
   // enqueued in program order, they all reach their receivers before the first tick.
   auto net = spawn_network(system, scenario, topo, clock, std::move(cameras_world));
-  auto script = spawn_scenario_script(system, scenario, clock);
+  auto script = spawn_scenario_script(system, scenario, clock, log);
   caf::anon_send(clock, join_atom_v, script, script_participant());
   auto faults = spawn_fault_injector(system, scenario, clock, std::move(net));
   caf::anon_send(clock, join_atom_v, faults, fault_injector_participant(scenario));
@@ -141,6 +173,7 @@ run_outcome run_scenario(const config::scenario& scenario, const run_options& op
     caf::anon_send_exit(recorder, caf::exit_reason::user_shutdown);
     throw std::runtime_error("run failed: " + failure);
   }
+  evaluate_run(scenario, *world_settings_station, log->take(), end_tick, options, outcome);
   return outcome;
 }
 

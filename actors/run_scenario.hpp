@@ -5,6 +5,7 @@
 
 #include "actors/run_result.hpp"
 #include "config/scenario.hpp"
+#include "eval/metrics.hpp"
 
 namespace argus::actors {
 
@@ -12,6 +13,8 @@ namespace argus::actors {
 struct run_outcome {
   run_result result;
   std::filesystem::path output_dir;
+  /// The run measured against ground truth (also in metrics.json).
+  eval::evaluation evaluation;
 };
 
 /// How `argus run` runs a scenario, beyond the scenario itself.
@@ -26,6 +29,9 @@ struct run_options {
   int video_height_px = 240;
   /// Render workers (EGL contexts) for the video; 0 = as many as scheduler threads.
   std::size_t render_threads = 0;
+  /// Also write the run in MOTChallenge format to `<output dir>/mot` (ground truth of every
+  /// camera's every frame: a visibility pass per camera per frame).
+  bool mot = false;
 };
 
 /// Runs a validated scenario to its end on a CAF scheduler with `scenario.run.threads` worker

@@ -3,6 +3,7 @@
 #include <memory>
 #include <mutex>
 
+#include "eval/observation_log.hpp"
 #include "world/snapshot.hpp"
 
 namespace argus::actors {
@@ -17,11 +18,15 @@ namespace argus::actors {
 /// list of observers is fixed when the run starts; every camera, old or new, finds the board.
 class snapshot_board {
  public:
-  /// Publishes `frame` (phase network).
+  /// Publishes `frame` (phase network), and samples the tasks' targets in it when the run is
+  /// evaluated.
   void publish(std::shared_ptr<const world::snapshot> frame) {
+    if (log_) sample_targets(*log_, *frame);
     std::lock_guard<std::mutex> guard(mutex_);
     latest_ = std::move(frame);
   }
+  /// Where publications record the targets' true states (before the run starts).
+  void record_targets_in(std::shared_ptr<eval::observation_log> log) { log_ = std::move(log); }
   /// The latest snapshot (phase cameras); null before the first.
   std::shared_ptr<const world::snapshot> latest() const {
     std::lock_guard<std::mutex> guard(mutex_);
@@ -29,6 +34,22 @@ class snapshot_board {
   }
 
  private:
+  static void sample_targets(eval::observation_log& log, const world::snapshot& frame) {
+    std::vector<eval::target_sample> samples;
+    for (const auto& o : log.origins()) {
+      eval::target_sample s{static_cast<std::int64_t>(frame.tick()), o.task, o.pedestrian};
+      if (const auto* who = frame.find(o.pedestrian)) {
+        s.x_m = who->position.x();
+        s.y_m = who->position.y();
+        s.height_m = who->look.height_m;
+        s.present = true;
+      }
+      samples.push_back(s);
+    }
+    if (!samples.empty()) log.add_samples(std::move(samples));
+  }
+
+  std::shared_ptr<eval::observation_log> log_;
   mutable std::mutex mutex_;
   std::shared_ptr<const world::snapshot> latest_;
 };

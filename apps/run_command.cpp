@@ -9,9 +9,11 @@
 #include "actors/run_scenario.hpp"
 #include "apps/commands.hpp"
 #include "apps/option_checks.hpp"
+#include "apps/task_option.hpp"
 #include "config/duration.hpp"
 #include "config/scenario_error.hpp"
 #include "config/scenario_loader.hpp"
+#include "eval/run_files.hpp"
 #include "fmt/format.h"
 #include "nlohmann/json.hpp"
 
@@ -29,6 +31,8 @@ struct run_arguments {
   bool no_progress = false;
   bool video = false;
   std::string video_size = "320x240";
+  bool mot = false;
+  std::vector<std::string> tasks;
 };
 
 // `--video-size WxH`, each side 16 to 4096 pixels.
@@ -77,6 +81,7 @@ void print_outcome(const run_arguments& args, const config::scenario& s,
     j["unexpected_down"] = r.unexpected_down;
     j["events"] = (outcome.output_dir / "events.jsonl").string();
     j["summary"] = (outcome.output_dir / "summary.json").string();
+    j["metrics"] = (outcome.output_dir / "metrics.json").string();
     if (args.video) j["video"] = (outcome.output_dir / "video" / "feeds.avi").string();
     std::cout << j.dump() << '\n';
     return;
@@ -87,6 +92,9 @@ void print_outcome(const run_arguments& args, const config::scenario& s,
       r.wall_seconds > 0 ? r.virtual_seconds / r.wall_seconds : 0.0, r.events_total);
   std::cout << "  events:  " << (outcome.output_dir / "events.jsonl").string() << '\n';
   std::cout << "  summary: " << (outcome.output_dir / "summary.json").string() << '\n';
+  std::cout << "  metrics: " << (outcome.output_dir / "metrics.json").string() << '\n';
+  if (args.mot) std::cout << "  mot:     " << (outcome.output_dir / "mot").string() << '\n';
+  eval::print_metrics_table(std::cout, outcome.evaluation);
   if (args.video)
     std::cout << "  video:   " << (outcome.output_dir / "video" / "feeds.avi").string() << '\n';
   if (!r.unexpected_down.empty())
@@ -113,10 +121,15 @@ void add_run_command(CLI::App& app, int& result) {
                 "Also write a mosaic video of every camera's view to DIR/video/feeds.avi");
   cmd->add_option("--video-size", args->video_size,
                   "Size of one camera's tile in the video, WxH (default 320x240)");
+  cmd->add_flag("--mot", args->mot,
+                "Also write ground truth and track boxes in MOTChallenge format to DIR/mot");
+  cmd->add_option("--task", args->tasks,
+                  "Add an operator task, e.g. 'at=10s,camera=7,pixel=160x120' (repeatable; keys "
+                  "as in a scenario's tasks)");
   cmd->callback([args, &result] {
     config::scenario scenario;
     try {
-      scenario = config::load_scenario(args->scenario);
+      scenario = load_with_tasks(args->scenario, args->tasks);
     } catch (const config::scenario_error& e) {
       std::cerr << e.what() << '\n';
       result = bad_input;
@@ -126,6 +139,7 @@ void add_run_command(CLI::App& app, int& result) {
     actors::run_options options;
     std::tie(options.video_width_px, options.video_height_px) = parse_video_size(args->video_size);
     options.video = args->video;
+    options.mot = args->mot;
     try {
       options.show_progress = !args->no_progress && isatty(STDERR_FILENO) != 0;
       auto outcome = actors::run_scenario(scenario, options);

@@ -106,4 +106,24 @@ struct enum_names<sensing_mode> {
   }};
 };
 
+/// How an operator task names its target, as the event log writes it.
+template <>
+struct enum_names<task_target> {
+  static constexpr std::array<enum_entry<task_target>, 3> entries{{
+      {task_target::pedestrian, "pedestrian"},
+      {task_target::pixel, "pixel"},
+      {task_target::first_to_enter, "first_to_enter"},
+  }};
+};
+
+/// Names for the controller's `strategy`.
+template <>
+struct enum_names<control_strategy> {
+  static constexpr std::array<enum_entry<control_strategy>, 3> entries{{
+      {control_strategy::paper, "paper"},
+      {control_strategy::no_collaboration, "no_collaboration"},
+      {control_strategy::oracle, "oracle"},
+  }};
+};
+
 }  // namespace argus::config

@@ -158,6 +158,12 @@ struct sensing_settings {
   friend bool operator==(const sensing_settings&, const sensing_settings&) = default;
 };
 
+/// Who decides which cameras observe a target: the paper's protocol (auctions, groups,
+/// handoffs, conflict resolution); no collaboration (the tasked camera tracks alone, as a
+/// baseline); or a central oracle that assigns cameras from ground truth (an upper bound that
+/// no real network can reach: it knows where everyone is and needs no messages).
+enum class control_strategy { paper, no_collaboration, oracle };
+
 /// The camera controller and protocol (Table 2, controller and at-node parameters; eq. 1).
 struct controller_settings {
   seconds wait_timeout{120.0};
@@ -177,6 +183,7 @@ struct controller_settings {
   double relevance_sigma_tilt_deg = 5.0;
   conflict_solver solver = conflict_solver::best_solv;
   merge_rule merge = merge_rule::highest_id;
+  control_strategy strategy = control_strategy::paper;
   // Beyond Table 2: what the paper leaves unstated (docs/protocol.md says why each).
   /// A leader collects bids for this long after announcing an auction, then selects.
   seconds auction_window{3.0};
@@ -189,15 +196,31 @@ struct controller_settings {
   friend bool operator==(const controller_settings&, const controller_settings&) = default;
 };
 
-/// An operator request: at time `at`, observe pedestrian `pedestrian` starting from camera
-/// `camera`, with at least `cameras_wanted` and at most `max_cameras` cameras (0 = as many as
-/// wanted).
+/// How an operator task names its target (Section IV: the operator selects a pedestrian in a
+/// camera's feed; Fig. 19: a camera observes the first pedestrian who enters its view).
+enum class task_target { pedestrian, pixel, first_to_enter };
+
+/// A point in a camera's frame, in pixels from the top-left corner.
+struct pixel_point {
+  double x_px = 0.0;
+  double y_px = 0.0;
+  friend bool operator==(const pixel_point&, const pixel_point&) = default;
+};
+
+/// An operator request: at time `at`, observe a pedestrian starting from camera `camera`, with
+/// at least `cameras_wanted` and at most `max_cameras` cameras (0 = as many as wanted). The
+/// target is pedestrian `pedestrian` (by id: the operator's click stood in for by ground
+/// truth), the pedestrian under `pixel` in the camera's frame (the click itself), or the first
+/// pedestrian to enter the camera's view from `at` on. At `cancel_at` the operator ends it.
 struct operator_task {
   seconds at{0.0};
   int pedestrian = 0;
   int camera = 0;
   unsigned cameras_wanted = 1;
   unsigned max_cameras = 0;
+  task_target by = task_target::pedestrian;
+  pixel_point pixel;
+  std::optional<seconds> cancel_at;
   /// The number of cameras the group aims for.
   unsigned cameras_max() const noexcept { return std::max(cameras_wanted, max_cameras); }
   friend bool operator==(const operator_task&, const operator_task&) = default;

@@ -59,7 +59,7 @@ constexpr std::array<std::string_view, 12> network_keys{"loss_probability",
                                                         "reorder",
                                                         "hello_interval",
                                                         "neighbour_timeout"};
-constexpr std::array<std::string_view, 20> controller_keys{"wait_timeout",
+constexpr std::array<std::string_view, 21> controller_keys{"wait_timeout",
                                                            "search_timeout",
                                                            "min_relevance",
                                                            "heartbeat_interval",
@@ -75,12 +75,14 @@ constexpr std::array<std::string_view, 20> controller_keys{"wait_timeout",
                                                            "relevance_sigma_tilt_deg",
                                                            "solver",
                                                            "merge",
+                                                           "strategy",
                                                            "auction_window",
                                                            "auction_interval",
                                                            "relevance_look_time",
                                                            "demotion_backoff_max"};
-constexpr std::array<std::string_view, 5> task_keys{"at", "pedestrian", "camera", "cameras_wanted",
-                                                    "max_cameras"};
+constexpr std::array<std::string_view, 8> task_keys{
+    "at",     "pedestrian",     "pixel",       "first_to_enter",
+    "camera", "cameras_wanted", "max_cameras", "cancel_at"};
 constexpr std::array<std::string_view, 6> fault_keys{"at",   "kind",   "camera",
                                                      "peer", "length", "loss_probability"};
 
@@ -111,7 +113,7 @@ class scenario_parser {
     if (const auto node = document.find("network")) read_network(*node, out.network);
     if (const auto node = document.find("controller")) read_controller(*node, out.controller);
     if (const auto node = document.find("sensing")) read_sensing(*node, out.sensing);
-    if (const auto node = document.find("tasks")) read_tasks(*node, out.tasks);
+    if (const auto node = document.find("tasks")) read_tasks(*node, out.cameras, out.tasks);
     if (const auto node = document.find("faults")) read_faults(*node, out.faults);
   }
 
@@ -363,6 +365,7 @@ class scenario_parser {
     controller.read("relevance_sigma_tilt_deg", out.relevance_sigma_tilt_deg, positive);
     controller.read("solver", out.solver);
     controller.read("merge", out.merge);
+    controller.read("strategy", out.strategy);
     controller.read("auction_window", out.auction_window, positive);
     controller.read("auction_interval", out.auction_interval, non_negative);
     controller.read("relevance_look_time", out.relevance_look_time, positive);
@@ -375,24 +378,83 @@ class scenario_parser {
     sensing.read("sensor_model", out.sensor_model);
   }
 
-  void read_tasks(const YAML::Node& node, std::vector<operator_task>& out) {
+  void read_tasks(const YAML::Node& node, const std::vector<camera_settings>& cameras,
+                  std::vector<operator_task>& out) {
     if (!reader_.expect_list(node, "tasks")) return;
     for (std::size_t index = 0; index < node.size(); ++index) {
       mapping_reader task(reader_, node[index], item("tasks", index), task_keys);
       operator_task read;
       if (task.require("at")) task.read("at", read.at, non_negative);
-      if (task.require("pedestrian")) {
-        task.read("pedestrian", read.pedestrian, value_bounds::at_least(0));
-      }
-      if (task.require("camera")) {
-        read_camera_reference(*task.find("camera"), task.field("camera"), read.camera);
-      }
+      read_task_target(task, node[index], cameras, read);
       task.read("cameras_wanted", read.cameras_wanted, value_bounds::at_least(1));
       // No fewer than it wants (checked after cameras_wanted is known).
       task.read("max_cameras", read.max_cameras,
                 value_bounds::at_least(static_cast<double>(read.cameras_wanted)));
+      if (const auto cancel = task.find("cancel_at")) {
+        seconds at{0.0};
+        if (task.read("cancel_at", at, value_bounds::above(read.at.count()))) read.cancel_at = at;
+      }
       out.push_back(read);
     }
+  }
+
+  // Exactly one of `pedestrian`, `pixel` and `first_to_enter` names the target; the camera is
+  // the one the operator looks through (for first_to_enter, the one watched).
+  void read_task_target(mapping_reader& task, const YAML::Node& where,
+                        const std::vector<camera_settings>& cameras, operator_task& read) {
+    constexpr std::array<std::string_view, 3> ways{"pedestrian", "pixel", "first_to_enter"};
+    std::vector<std::string_view> given;
+    for (auto way : ways)
+      if (task.find(way)) given.push_back(way);
+    if (given.size() != 1) {
+      reader_.report(where, task.field("pedestrian"),
+                     given.empty()
+                         ? "expected one of pedestrian (an id), pixel ([x, y] in the camera's "
+                           "frame) or first_to_enter (a camera id)"
+                         : fmt::format("expected only one of pedestrian, pixel and "
+                                       "first_to_enter, got {}",
+                                       fmt::join(given, " and ")));
+      return;
+    }
+    if (given.front() == "first_to_enter") {
+      read.by = task_target::first_to_enter;
+      if (!read_camera_reference(*task.find("first_to_enter"), task.field("first_to_enter"),
+                                 read.camera))
+        return;
+      if (const auto camera = task.find("camera")) {
+        int named = 0;
+        if (read_camera_reference(*camera, task.field("camera"), named) && named != read.camera)
+          reader_.report(*camera, task.field("camera"),
+                         fmt::format("first_to_enter watches camera {}; camera {} differs (leave "
+                                     "camera out)",
+                                     read.camera, named));
+      }
+      return;
+    }
+    if (!task.require("camera") ||
+        !read_camera_reference(*task.find("camera"), task.field("camera"), read.camera))
+      return;
+    if (given.front() == "pedestrian") {
+      read.by = task_target::pedestrian;
+      task.read("pedestrian", read.pedestrian, value_bounds::at_least(1));
+      return;
+    }
+    read.by = task_target::pixel;
+    read_pixel(*task.find("pixel"), task.field("pixel"), cameras, read);
+  }
+
+  void read_pixel(const YAML::Node& node, const std::string& path,
+                  const std::vector<camera_settings>& cameras, operator_task& read) {
+    if (!node.IsSequence() || node.size() != 2) {
+      reader_.report(node, path, "expected [x, y], a pixel in the camera's frame");
+      return;
+    }
+    const auto camera = std::find_if(cameras.begin(), cameras.end(),
+                                     [&](const auto& c) { return c.id == read.camera; });
+    const double width = camera->imaging.width_px;
+    const double height = camera->imaging.height_px;
+    reader_.read(node[0], item(path, 0), read.pixel.x_px, value_bounds::right_open(0.0, width));
+    reader_.read(node[1], item(path, 1), read.pixel.y_px, value_bounds::right_open(0.0, height));
   }
 
   void read_faults(const YAML::Node& node, std::vector<fault>& out) {

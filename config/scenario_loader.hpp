@@ -42,9 +42,13 @@
 ///              min_task_duration: 1 min, membership_relevance_threshold: 0.1,
 ///              merge_timeout: 5 min, bidding_timeout: 2 min, relevance_sigma_fov_deg: 5,
 ///              relevance_sigma_pan_deg: 5, relevance_sigma_tilt_deg: 5,
-///              solver: best_solv}              # best_solv | all_solv | bound_solv
-/// tasks:                                     # at, pedestrian, camera required
-///   - {at: 10 s, pedestrian: 12, camera: 7, cameras_wanted: 2}
+///              solver: best_solv,              # best_solv | all_solv | bound_solv
+///              merge: highest_id,              # highest_id | negotiation
+///              strategy: paper}                # paper | no_collaboration | oracle
+/// tasks:                       # at required, and one of pedestrian, pixel, first_to_enter
+///   - {at: 10 s, pedestrian: 12, camera: 7, cameras_wanted: 2}      # by id, camera required
+///   - {at: 20 s, pixel: [160, 120], camera: 7, cancel_at: 5 min}    # the operator's click
+///   - {at: 0 s, first_to_enter: 2, max_cameras: 2}                  # Fig. 19
 /// faults:                                    # at, kind, camera required
 ///   - {at: 60 s, kind: crash, camera: 7}
 ///   - {at: 90 s, kind: crash_and_recover, camera: 3, length: 30 s}     # length required

@@ -134,9 +134,22 @@ std::string adjacency(const std::vector<std::array<int, 2>>& links) {
 }
 
 std::string task(const operator_task& each) {
-  auto text = fmt::format("- {{at: {}, pedestrian: {}, camera: {}, cameras_wanted: {}",
-                          duration(each.at), each.pedestrian, each.camera, each.cameras_wanted);
+  auto text = fmt::format("- {{at: {}, ", duration(each.at));
+  switch (each.by) {
+    case task_target::pedestrian:
+      text += fmt::format("pedestrian: {}, camera: {}", each.pedestrian, each.camera);
+      break;
+    case task_target::pixel:
+      text += fmt::format("pixel: [{}, {}], camera: {}", number(each.pixel.x_px),
+                          number(each.pixel.y_px), each.camera);
+      break;
+    case task_target::first_to_enter:
+      text += fmt::format("first_to_enter: {}", each.camera);
+      break;
+  }
+  text += fmt::format(", cameras_wanted: {}", each.cameras_wanted);
   if (each.max_cameras != 0) text += fmt::format(", max_cameras: {}", each.max_cameras);
+  if (each.cancel_at) text += fmt::format(", cancel_at: {}", duration(*each.cancel_at));
   return text + "}";
 }
 
@@ -210,6 +223,7 @@ std::string to_yaml(const scenario& s) {
   out.entry(1, "relevance_sigma_tilt_deg", number(controller.relevance_sigma_tilt_deg));
   out.entry(1, "solver", yaml_name(controller.solver));
   out.entry(1, "merge", yaml_name(controller.merge));
+  out.entry(1, "strategy", yaml_name(controller.strategy));
   out.entry(1, "auction_window", duration(controller.auction_window));
   out.entry(1, "auction_interval", duration(controller.auction_interval));
   out.entry(1, "relevance_look_time", duration(controller.relevance_look_time));

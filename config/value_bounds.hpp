@@ -30,6 +30,8 @@ struct value_bounds {
   static value_bounds closed(double low, double high) { return {low, true, high, true}; }
   /// low < x < high.
   static value_bounds open(double low, double high) { return {low, false, high, false}; }
+  /// low <= x < high.
+  static value_bounds right_open(double low, double high) { return {low, true, high, false}; }
   /// low < x <= high.
   static value_bounds left_open(double low, double high) { return {low, false, high, true}; }
 

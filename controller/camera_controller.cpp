@@ -137,6 +137,7 @@ controller_output camera_controller::step(const controller_input& in) {
   pose_ = in.pose;
   controller_output out;
   take_looks(in, out);
+  for (auto t : in.cancels) cancel(t, me_.id, out);
   for (const auto& q : in.queries) take_query(q, out);
   for (const auto& m : in.messages) take_message(m, out);
   run_timers(out);
@@ -226,6 +227,8 @@ void camera_controller::take_message(const received_message& m, controller_outpu
           on_csp_data(msg, out);
         } else if constexpr (std::is_same_v<T, protocol::csp_result>) {
           on_csp_result(msg, out);
+        } else if constexpr (std::is_same_v<T, protocol::task_cancel>) {
+          cancel(msg.task, m.origin, out);
         }
       },
       m.message);
@@ -234,6 +237,7 @@ void camera_controller::take_message(const received_message& m, controller_outpu
 void camera_controller::on_query(int from, const protocol::query_relevance& q,
                                  controller_output& out) {
   const auto t = q.task.task;
+  if (cancelled_.count(t) != 0) return;
   if (q.relay) {
     // Section IV-A: a leader recruits through its members, who announce to their neighbours.
     if (task_ && task_->task == t && role_ == group_role::member && leader_ == q.leader) {
@@ -283,6 +287,7 @@ void camera_controller::on_bid(int from, const protocol::relevance_bid& b, contr
 }
 
 void camera_controller::on_join(const protocol::join& j, controller_output& out) {
+  if (cancelled_.count(j.task.task) != 0) return;
   if (j.invitee != me_.id) {
     // A copy for the member that relayed the invitee's bid: pass it on.
     if (task_ && task_->task == j.task.task && role_ == group_role::member && leader_ == j.leader) {
@@ -316,6 +321,11 @@ void camera_controller::on_join(const protocol::join& j, controller_output& out)
 }
 
 void camera_controller::on_status(const protocol::status& s, controller_output& out) {
+  // A node that missed the cancellation (lost messages, out of reach) hears it again.
+  if (cancelled_.count(s.task) != 0) {
+    send(s.sender, protocol::task_cancel{s.task, me_.id}, out);
+    return;
+  }
   if (!task_ || s.task != task_->task || s.sender == me_.id) return;
   if (auto r = retired_.find(s.sender); r != retired_.end()) {
     if (now_ - r->second < ticks(settings_.member_failure_timeout)) return;
@@ -400,6 +410,15 @@ void camera_controller::apply_demotions(const demotion_negotiator::actions& a,
   }
   for (int peer : a.absorbed) absorb(peer, out);
   if (a.demoted_to) follow_leader(*a.demoted_to, "demoted", out);
+}
+
+void camera_controller::cancel(task_id task, int from, controller_output& out) {
+  if (!cancelled_.insert(task).second) return;
+  emit(out, "cancel_heard", fmt::format(R"("task":{},"from":{})", task, from));
+  std::erase_if(pending_, [&](const pending_query& p) { return p.task.task == task; });
+  // Spread once: the group may reach beyond the operator's camera's hop limit.
+  send(protocol::broadcast, protocol::task_cancel{task, me_.id}, out);
+  if (task_ && task_->task == task) leave_task("cancelled", out);
 }
 
 // --- transitions -----------------------------------------------------------------------------
@@ -568,6 +587,8 @@ void camera_controller::lead(controller_output& out) {
   negotiator_.tick(now_, a);
   apply_demotions(a, out);
   if (!task_ || role_ != group_role::leader) return;
+  // The baseline without collaboration: the tasked camera never recruits.
+  if (settings_.strategy == config::control_strategy::no_collaboration) return;
   if (csp_ && (csp_->waiting.empty() || now_ >= csp_->deadline)) solve_csp(out);
   if (auction_ && now_ >= auction_->closes_at) {
     close_auction(out);

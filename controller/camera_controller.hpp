@@ -113,6 +113,7 @@ class camera_controller {
   void on_csp_query(int from, const protocol::csp_query& q, controller_output& out);
   void on_csp_data(const protocol::csp_data& d, controller_output& out);
   void on_csp_result(const protocol::csp_result& r, controller_output& out);
+  void cancel(task_id task, int from, controller_output& out);
   void run_timers(controller_output& out);
   void lead(controller_output& out);
   void follow(controller_output& out);
@@ -186,6 +187,8 @@ class camera_controller {
   // The bids of the last closed auction (candidates for conflict resolution).
   std::vector<protocol::relevance_bid> last_bids_;
   std::optional<csp_round> csp_;
+  // Tasks the operator ended: nothing about them is taken up again.
+  std::set<task_id> cancelled_;
   std::uint32_t next_csp_round_ = 1;
 };
 

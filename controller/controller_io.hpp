@@ -60,6 +60,8 @@ struct controller_input {
   std::vector<operator_query> queries;
   /// Messages delivered to this node, in canonical order.
   std::vector<received_message> messages;
+  /// Tasks the operator ended through this camera.
+  std::vector<task_id> cancels;
 };
 
 /// A message to send: to one node, or to every node within the hop limit (protocol::broadcast).

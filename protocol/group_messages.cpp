@@ -173,6 +173,9 @@ auto fields(csp_data& m) {
 auto fields(csp_result& m) {
   return std::tie(m.task, m.solver, m.cameras, m.minimum);
 }
+auto fields(task_cancel& m) {
+  return std::tie(m.task, m.sender);
+}
 
 bool is_relevance(double r) {
   return r >= 0.0 && r <= 1.0;
@@ -241,14 +244,31 @@ std::string_view kind_of(const group_message& m) {
     std::string_view operator()(const csp_query&) const { return "cspquery"; }
     std::string_view operator()(const csp_data&) const { return "cspdata"; }
     std::string_view operator()(const csp_result&) const { return "cspresult"; }
+    std::string_view operator()(const task_cancel&) const { return "cancel"; }
   };
   return std::visit(namer{}, m);
+}
+
+task_id task_of(const group_message& m) {
+  struct finder {
+    task_id operator()(const query_relevance& x) const { return x.task.task; }
+    task_id operator()(const relevance_bid& x) const { return x.task; }
+    task_id operator()(const join& x) const { return x.task.task; }
+    task_id operator()(const status& x) const { return x.task; }
+    task_id operator()(const handover& x) const { return x.task.task; }
+    task_id operator()(const demotion& x) const { return x.task; }
+    task_id operator()(const csp_query& x) const { return x.solver_task; }
+    task_id operator()(const csp_data& x) const { return x.task; }
+    task_id operator()(const csp_result& x) const { return x.task; }
+    task_id operator()(const task_cancel& x) const { return x.task; }
+  };
+  return std::visit(finder{}, m);
 }
 
 bool is_group_kind(std::string_view kind) {
   for (std::string_view k :
        {"queryrelevance", "relevance", "join", "status", "handover", "demote", "demoteack",
-        "demotenack", "demoteretry", "cspquery", "cspdata", "cspresult"})
+        "demotenack", "demoteretry", "cspquery", "cspdata", "cspresult", "cancel"})
     if (kind == k) return true;
   return false;
 }
@@ -268,6 +288,7 @@ std::optional<group_message> decode(std::string_view kind, std::string_view body
   if (kind == "cspquery") return read_whole<csp_query>(body);
   if (kind == "cspdata") return read_whole<csp_data>(body);
   if (kind == "cspresult") return read_whole<csp_result>(body);
+  if (kind == "cancel") return read_whole<task_cancel>(body);
   for (auto step :
        {demotion_step::demote, demotion_step::ack, demotion_step::nack, demotion_step::retry}) {
     if (kind != demotion_kind(step)) continue;

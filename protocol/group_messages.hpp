@@ -152,14 +152,25 @@ struct csp_result {
   friend bool operator==(const csp_result&, const csp_result&) = default;
 };
 
+/// The operator ended task `task` (not in the paper, which never ends a task): every node that
+/// learns of it leaves the task and spreads the word to its neighbourhood once.
+struct task_cancel {
+  task_id task = 0;
+  int sender = 0;
+  friend bool operator==(const task_cancel&, const task_cancel&) = default;
+};
+
 /// Any message of the protocol.
 using group_message = std::variant<query_relevance, relevance_bid, join, status, handover, demotion,
-                                   csp_query, csp_data, csp_result>;
+                                   csp_query, csp_data, csp_result, task_cancel>;
 
 /// The kind a message travels as: the paper's names ("queryrelevance", "relevance", "join",
 /// "status", "demote", "demoteack", "demotenack", "demoteretry"), and ours for what it leaves
-/// unnamed ("handover", "cspquery", "cspdata", "cspresult").
+/// unnamed ("handover", "cspquery", "cspdata", "cspresult", "cancel").
 std::string_view kind_of(const group_message& m);
+
+/// The task a message is about (a conflict query: the solver's task).
+task_id task_of(const group_message& m);
 
 /// Whether `kind` names one of the protocol's messages.
 bool is_group_kind(std::string_view kind);

@@ -19,8 +19,10 @@ double logistic(double z) {
 constexpr int grid_columns = 6;
 constexpr int grid_rows = 18;
 
-// Whether the straight line from `a` to `b` crosses no wall. station::line_clear looks only
-// at segments near its start, so a long line is checked in pieces shorter than that reach.
+}  // namespace
+
+// station::line_clear looks only at segments near its start, so a long line is checked in
+// pieces shorter than that reach.
 bool wall_free(const world::station& where, const world::vec2& a, const world::vec2& b) {
   const double length = (b - a).norm();
   const double piece = 0.9 * world::station::segment_reach_m;
@@ -33,8 +35,6 @@ bool wall_free(const world::station& where, const world::vec2& a, const world::v
   }
   return true;
 }
-
-}  // namespace
 
 color_histogram appearance_signature(const world::appearance& look, const histogram_bins& bins) {
   // Share of a standing figure's visible area (trousers include legs, shirt includes arms).

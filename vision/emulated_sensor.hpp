@@ -41,6 +41,9 @@ struct pedestrian_view {
   double occlusion = 0.0;
 };
 
+/// Whether the straight line from `a` to `b` on the plan crosses no wall of `where`.
+bool wall_free(const world::station& where, const world::vec2& a, const world::vec2& b);
+
 /// Every pedestrian of `frame` that `view` can see at least partly: in front of the camera,
 /// its box overlapping the image, and no wall of `where` on the line from the camera to it
 /// (station::line_clear). Nearest first. Occlusion is measured on a 6 x 18 grid of points of

@@ -29,7 +29,12 @@ config::scenario three_cameras(const std::filesystem::path& out) {
     c.id = id;
     s.cameras.push_back(c);
   }
-  s.tasks.push_back({config::seconds{0.5}, 12, 1, 2});
+  config::operator_task task;
+  task.at = config::seconds{0.5};
+  task.pedestrian = 12;
+  task.camera = 1;
+  task.cameras_wanted = 2;
+  s.tasks.push_back(task);
   config::fault recover;
   recover.at = config::seconds{1.0};
   recover.kind = config::fault_kind::crash_and_recover;

@@ -239,9 +239,10 @@ TEST(scenario_validation, camera_id_must_be_positive) {
 TEST(scenario_validation, missing_required_keys_point_at_the_parent_mapping) {
   EXPECT_EQ(only_problem("cameras:\n  - id: 1\n    height_m: 3\n"),
             (problem{"bad.yaml", 2, 5, "cameras[0].position", "missing required key 'position'"}));
-  EXPECT_EQ(
-      only_problem(one_camera + "tasks:\n  - {at: 1 s, camera: 1}\n"),
-      (problem{"bad.yaml", 4, 5, "tasks[0].pedestrian", "missing required key 'pedestrian'"}));
+  EXPECT_EQ(only_problem(one_camera + "tasks:\n  - {pedestrian: 2, camera: 1}\n"),
+            (problem{"bad.yaml", 4, 5, "tasks[0].at", "missing required key 'at'"}));
+  EXPECT_EQ(only_problem(one_camera + "tasks:\n  - {at: 1 s, pedestrian: 2}\n"),
+            (problem{"bad.yaml", 4, 5, "tasks[0].camera", "missing required key 'camera'"}));
   EXPECT_EQ(only_problem(one_camera + "faults:\n  - {kind: crash, camera: 1}\n"),
             (problem{"bad.yaml", 4, 5, "faults[0].at", "missing required key 'at'"}));
   EXPECT_EQ(only_problem("cameras:\n  - {id: 1, position: {x_m: 3}}\n"),
@@ -264,7 +265,7 @@ TEST(scenario_validation, link_faults_need_a_peer_and_timed_faults_a_length) {
 }
 
 TEST(scenario_validation, references_must_name_existing_cameras) {
-  EXPECT_EQ(only_problem(one_camera + "tasks:\n  - {at: 1 s, pedestrian: 0, camera: 7}\n"),
+  EXPECT_EQ(only_problem(one_camera + "tasks:\n  - {at: 1 s, pedestrian: 1, camera: 7}\n"),
             (problem{"bad.yaml", 4, 38, "tasks[0].camera", "no camera has id 7 (camera ids: 1)"}));
   EXPECT_EQ(
       only_problem(one_camera + "faults:\n  - {at: 1 s, kind: link_cut, camera: 1, peer: 2}\n"),
@@ -280,11 +281,36 @@ TEST(scenario_validation, references_must_name_existing_cameras) {
 TEST(scenario_validation, task_values_in_range) {
   EXPECT_EQ(
       only_problem(one_camera + "tasks:\n  - {at: 1 s, pedestrian: -1, camera: 1}\n"),
-      (problem{"bad.yaml", 4, 27, "tasks[0].pedestrian", "expected an integer >= 0, got -1"}));
+      (problem{"bad.yaml", 4, 27, "tasks[0].pedestrian", "expected an integer >= 1, got -1"}));
   EXPECT_EQ(
       only_problem(one_camera +
-                   "tasks:\n  - {at: 1 s, pedestrian: 0, camera: 1, cameras_wanted: 0}\n"),
+                   "tasks:\n  - {at: 1 s, pedestrian: 1, camera: 1, cameras_wanted: 0}\n"),
       (problem{"bad.yaml", 4, 57, "tasks[0].cameras_wanted", "expected an integer >= 1, got 0"}));
+}
+
+TEST(scenario_validation, a_task_names_its_target_one_way) {
+  EXPECT_EQ(only_problem(one_camera + "tasks:\n  - {at: 1 s, camera: 1}\n"),
+            (problem{"bad.yaml", 4, 5, "tasks[0].pedestrian",
+                     "expected one of pedestrian (an id), pixel ([x, y] in the camera's frame) "
+                     "or first_to_enter (a camera id)"}));
+  EXPECT_EQ(only_problem(one_camera + "tasks:\n  - {at: 1 s, camera: 1, pedestrian: 3, "
+                                      "pixel: [1, 2]}\n"),
+            (problem{"bad.yaml", 4, 5, "tasks[0].pedestrian",
+                     "expected only one of pedestrian, pixel and first_to_enter, got pedestrian "
+                     "and pixel"}));
+  EXPECT_EQ(
+      only_problem(one_camera + "tasks:\n  - {at: 1 s, camera: 1, pixel: [640, 2]}\n"),
+      (problem{"bad.yaml", 4, 34, "tasks[0].pixel[0]", "expected a number in [0, 640), got 640"}));
+  EXPECT_EQ(only_problem(one_camera + "tasks:\n  - {at: 1 s, camera: 1, pixel: 5}\n"),
+            (problem{"bad.yaml", 4, 33, "tasks[0].pixel",
+                     "expected [x, y], a pixel in the camera's frame"}));
+  EXPECT_EQ(only_problem(one_camera + "tasks:\n  - {at: 1 s, first_to_enter: 3}\n"),
+            (problem{"bad.yaml", 4, 31, "tasks[0].first_to_enter",
+                     "no camera has id 3 (camera ids: 1)"}));
+  EXPECT_EQ(
+      only_problem(one_camera +
+                   "tasks:\n  - {at: 9 s, pedestrian: 2, camera: 1, cancel_at: 9 s}\n"),
+      (problem{"bad.yaml", 4, 52, "tasks[0].cancel_at", "expected a duration > 9 s, got 9 s"}));
 }
 
 TEST(scenario_validation, several_problems_are_reported_together_in_file_order) {

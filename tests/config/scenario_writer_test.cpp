@@ -67,7 +67,25 @@ TEST(scenario_writer, round_trips_awkward_values_exactly) {
   camera.imaging.response.tint = 0.25;
   original.cameras.push_back(camera);
   original.faults.push_back(fault{1.5s, fault_kind::crash, 5, std::nullopt, 0s, 1.0});
-  original.tasks.push_back(operator_task{seconds{2.0 / 3.0}, 0, 5, 1});
+  operator_task by_id;
+  by_id.at = seconds{2.0 / 3.0};
+  by_id.pedestrian = 4;
+  by_id.camera = 5;
+  original.tasks.push_back(by_id);
+  operator_task by_pixel;
+  by_pixel.at = 3s;
+  by_pixel.by = task_target::pixel;
+  by_pixel.pixel = {160.5, 1.0 / 3.0};
+  by_pixel.camera = 5;
+  by_pixel.cancel_at = seconds{10.0 / 3.0};
+  original.tasks.push_back(by_pixel);
+  operator_task by_entry;
+  by_entry.by = task_target::first_to_enter;
+  by_entry.camera = 5;
+  by_entry.cameras_wanted = 2;
+  by_entry.max_cameras = 3;
+  original.tasks.push_back(by_entry);
+  original.controller.strategy = control_strategy::oracle;
   expect_same(round_trip(original), original);
 }
 

@@ -32,7 +32,8 @@ std::vector<group_message> one_of_each() {
           demotion{demotion_step::retry, 3, 1, {}},
           csp_query{3, 1, 2},
           csp_data{3, 1, 2, 1, 2, {{4, 0.5}, {5, 0.25}}, {4}},
-          csp_result{3, 1, {4, 5}, 1}};
+          csp_result{3, 1, {4, 5}, 1},
+          task_cancel{3, 1}};
 }
 
 TEST(group_messages, every_kind_survives_its_encoding) {

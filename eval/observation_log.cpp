@@ -1,0 +1,72 @@
+#include "eval/observation_log.hpp"
+
+#include <algorithm>
+
+namespace argus::eval {
+
+void observation_log::add_frame(camera_frame frame) {
+  std::lock_guard<std::mutex> guard(mutex_);
+  data_.frames[frame.camera].push_back(std::move(frame));
+}
+
+void observation_log::add_origin(const task_origin& origin) {
+  std::lock_guard<std::mutex> guard(mutex_);
+  data_.origins.push_back(origin);
+}
+
+void observation_log::add_cancel(std::uint32_t task, std::int64_t tick) {
+  std::lock_guard<std::mutex> guard(mutex_);
+  data_.cancels.emplace(task, tick);
+}
+
+std::optional<int> observation_log::target_of(std::uint32_t task) const {
+  std::lock_guard<std::mutex> guard(mutex_);
+  for (const auto& o : data_.origins)
+    if (o.task == task) return o.pedestrian;
+  return std::nullopt;
+}
+
+std::vector<task_origin> observation_log::origins() const {
+  std::lock_guard<std::mutex> guard(mutex_);
+  std::vector<task_origin> out;
+  for (const auto& o : data_.origins) {
+    auto c = data_.cancels.find(o.task);
+    if (c == data_.cancels.end()) out.push_back(o);
+  }
+  return out;
+}
+
+std::set<int> observation_log::cameras_alive(std::int64_t tick) const {
+  std::lock_guard<std::mutex> guard(mutex_);
+  std::set<int> out;
+  // A camera's newest frame may be of the tick in progress: look at the last two.
+  for (const auto& [camera, frames] : data_.frames)
+    for (auto it = frames.rbegin(); it != frames.rend() && it - frames.rbegin() < 2; ++it)
+      if (it->tick == tick) out.insert(camera);
+  return out;
+}
+
+void observation_log::add_samples(std::vector<target_sample> samples) {
+  std::lock_guard<std::mutex> guard(mutex_);
+  data_.samples.insert(data_.samples.end(), samples.begin(), samples.end());
+}
+
+void observation_log::add_sent(std::uint32_t task, std::string_view kind) {
+  std::lock_guard<std::mutex> guard(mutex_);
+  ++data_.sent[{task, std::string(kind)}];
+}
+
+observation_log::contents observation_log::take() {
+  std::lock_guard<std::mutex> guard(mutex_);
+  auto out = std::move(data_);
+  data_ = {};
+  // Origins arrive from several cameras in one phase: put them in a thread-free order.
+  std::sort(out.origins.begin(), out.origins.end(),
+            [](const auto& a, const auto& b) { return a.task < b.task; });
+  std::sort(out.samples.begin(), out.samples.end(), [](const auto& a, const auto& b) {
+    return std::tie(a.tick, a.task) < std::tie(b.tick, b.task);
+  });
+  return out;
+}
+
+}  // namespace argus::eval

@@ -1,0 +1,58 @@
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <mutex>
+#include <optional>
+#include <set>
+#include <utility>
+#include <vector>
+
+#include "eval/records.hpp"
+
+namespace argus::eval {
+
+/// Where a run's nodes and world leave what the evaluation needs. Camera nodes add their own
+/// frames in phase cameras; the world's publication adds the targets' samples in phase
+/// network; the clock's phase barriers order every tick's writes, so the content depends on
+/// the tick alone, never on threads. The lock only protects the containers. Each camera's
+/// frames are kept apart, so the order cameras of one tick write in does not matter either.
+class observation_log {
+ public:
+  /// Whether frames carry everyone visible (MOTChallenge ground truth; costs a visibility
+  /// pass per camera per frame).
+  explicit observation_log(bool with_visible = false) : with_visible_(with_visible) {}
+
+  bool with_visible() const noexcept { return with_visible_; }
+
+  void add_frame(camera_frame frame);
+  /// A task's target became known (operator's camera, phase cameras).
+  void add_origin(const task_origin& origin);
+  /// The operator cancelled `task` at `tick`.
+  void add_cancel(std::uint32_t task, std::int64_t tick);
+  /// The pedestrian a task follows, if known.
+  std::optional<int> target_of(std::uint32_t task) const;
+  /// Tasks and their targets, for the world to sample.
+  std::vector<task_origin> origins() const;
+  void add_samples(std::vector<target_sample> samples);
+  /// The cameras that recorded a frame in `tick` (once that tick's camera phase is over).
+  std::set<int> cameras_alive(std::int64_t tick) const;
+  void add_sent(std::uint32_t task, std::string_view kind);
+
+  /// Everything recorded, once the run is over.
+  struct contents {
+    std::map<int, std::vector<camera_frame>> frames;  // by camera, in tick order
+    std::vector<task_origin> origins;
+    std::map<std::uint32_t, std::int64_t> cancels;
+    std::vector<target_sample> samples;
+    std::map<std::pair<std::uint32_t, std::string>, std::uint64_t> sent;
+  };
+  contents take();
+
+ private:
+  bool with_visible_ = false;
+  mutable std::mutex mutex_;
+  contents data_;
+};
+
+}  // namespace argus::eval
