@@ -13,13 +13,18 @@
 // makes it half the frame high, and the tracker starts on its ground-truth box there, its
 // signature taken from that first (degraded) frame inside the box (or, with --signature
 // appearance, from the pedestrian's clean appearance). Each later frame, ground truth
-// (visible_pedestrians: projected boxes, nearest first) classifies the tracker's box:
+// (visible_pedestrians: projected boxes, clipped to the frame: the visible boxes) classifies
+// the tracker's box B:
 //
-//   held    the tracker found a box and it contains the target's projected body centre;
-//   other   it found a box on another pedestrian's centre instead (wrong identity);
-//   astray  it found a box on nobody's centre (floor, a partly seen body);
+//   held    IoU(B, the target's visible box) >= 0.5;
+//   other   B covers another pedestrian more than the target (a larger fraction of that
+//           pedestrian's visible box lies inside B than of the target's): wrong identity;
+//   astray  neither: B on the floor, on a part of the target, or far larger than it;
 //   lost    the tracker reported the target lost (Wait / Search / failed);
 //   switch  a frame "other" whose last classified frame was "held" (an identity switch).
+//
+// `centre` is the older, looser score, shown beside it: B contains the target's body centre,
+// however large B is.
 //
 // Frames are counted while the target is in the station (it may leave by a portal).
 // Densities and noise levels share the seed, so every cell follows the same people.
@@ -95,6 +100,7 @@ std::vector<noise_level> noise_levels(unsigned width_px, unsigned height_px) {
 struct target_counts {
   int frames = 0;
   int held = 0;
+  int centre = 0;
   int other = 0;
   int astray = 0;
   int lost = 0;
@@ -162,6 +168,17 @@ bool choose_target(follower& f, const world::snapshot& frame, const world::stati
   return false;
 }
 
+double intersection_over_union(const cv::Rect2d& a, const cv::Rect2d& b) {
+  const double common = (a & b).area();
+  const double either = a.area() + b.area() - common;
+  return either > 0.0 ? common / either : 0.0;
+}
+
+// The fraction of `covered` inside `box`.
+double coverage(const cv::Rect2d& box, const cv::Rect2d& covered) {
+  return covered.area() > 0.0 ? (box & covered).area() / covered.area() : 0.0;
+}
+
 // Classifies one frame of `f` against ground truth.
 void score_frame(follower& f, const vision::track_observation& seen, const world::snapshot& frame,
                  const world::station& where, int width_px, int height_px) {
@@ -175,18 +192,22 @@ void score_frame(follower& f, const vision::track_observation& seen, const world
     return;
   }
   const cv::Rect2d box(seen.box);
-  bool on_target = false, on_other = false;
+  const cv::Rect2d image(0.0, 0.0, width_px, height_px);
+  double target_iou = 0.0, target_cover = 0.0, other_cover = 0.0;
   for (const auto& p : people) {
-    if (!box.contains(centre_of(p.box))) continue;
-    if (p.id == f.target_id)
-      on_target = true;
-    else
-      on_other = true;
+    const auto visible = p.box & image;
+    if (p.id == f.target_id) {
+      target_iou = intersection_over_union(box, visible);
+      target_cover = coverage(box, visible);
+      if (box.contains(centre_of(p.box))) ++c.centre;
+    } else if (p.occlusion < 1.0) {
+      other_cover = std::max(other_cover, coverage(box, visible));
+    }
   }
-  if (on_target) {
+  if (target_iou >= 0.5) {
     ++c.held;
     f.last_on_target = true;
-  } else if (on_other) {
+  } else if (other_cover > target_cover) {
     ++c.other;
     if (f.last_on_target == true) ++c.switches;
     f.last_on_target = false;
@@ -284,6 +305,7 @@ target_counts total_of(const cell_result& cell) {
   for (const auto& c : cell.targets) {
     t.frames += c.frames;
     t.held += c.held;
+    t.centre += c.centre;
     t.other += c.other;
     t.astray += c.astray;
     t.lost += c.lost;
@@ -309,11 +331,13 @@ std::string to_json(const std::vector<cell_result>& cells, double seconds, int w
     const auto t = total_of(cell);
     out += fmt::format(
         "{}\n  {{\"density\": \"{}\", \"noise\": \"{}\", \"targets\": {}, \"frames\": {}, "
-        "\"held\": {}, \"other\": {}, \"astray\": {}, \"lost\": {}, \"switches\": {}, \"in_view\": "
+        "\"held\": {}, \"centre\": {}, \"other\": {}, \"astray\": {}, \"lost\": {}, \"switches\": "
+        "{}, \"in_view\": "
         "{}, "
         "\"held_fraction\": {:.4f}, \"wall_s\": {:.2f}, \"per_target_held\": [",
-        i == 0 ? "" : ",", cell.density, cell.noise, cell.targets.size(), t.frames, t.held, t.other,
-        t.astray, t.lost, t.switches, t.in_view, fraction(t.held, t.frames), cell.wall_s);
+        i == 0 ? "" : ",", cell.density, cell.noise, cell.targets.size(), t.frames, t.held,
+        t.centre, t.other, t.astray, t.lost, t.switches, t.in_view, fraction(t.held, t.frames),
+        cell.wall_s);
     for (std::size_t k = 0; k < cell.targets.size(); ++k)
       out += fmt::format("{}{:.4f}", k == 0 ? "" : ", ",
                          fraction(cell.targets[k].held, cell.targets[k].frames));
@@ -385,17 +409,18 @@ int main(int argc, char** argv) {
   vision::renderer render(where);
   std::vector<cell_result> cells;
   // Fractions of the frames in which the target is in the station.
-  std::printf("%-8s %-9s %7s %7s %7s %7s %7s %7s %8s %8s %6s\n", "density", "noise", "targets",
-              "frames", "held", "other", "astray", "lost", "switches", "in_view", "wall_s");
+  std::printf("%-8s %-9s %7s %7s %7s %7s %7s %7s %7s %8s %8s %6s\n", "density", "noise", "targets",
+              "frames", "held", "centre", "other", "astray", "lost", "switches", "in_view",
+              "wall_s");
   for (const auto& d : densities)
     for (const auto& n : noise_levels(width, height)) {
       cells.push_back(run_cell(scenario, where, render, d, n, seconds, cameras, signature));
       const auto t = total_of(cells.back());
-      std::printf("%-8s %-9s %7zu %7d %7.3f %7.3f %7.3f %7.3f %8d %8.3f %6.1f\n", d.name, n.name,
-                  cells.back().targets.size(), t.frames, fraction(t.held, t.frames),
-                  fraction(t.other, t.frames), fraction(t.astray, t.frames),
-                  fraction(t.lost, t.frames), t.switches, fraction(t.in_view, t.frames),
-                  cells.back().wall_s);
+      std::printf("%-8s %-9s %7zu %7d %7.3f %7.3f %7.3f %7.3f %7.3f %8d %8.3f %6.1f\n", d.name,
+                  n.name, cells.back().targets.size(), t.frames, fraction(t.held, t.frames),
+                  fraction(t.centre, t.frames), fraction(t.other, t.frames),
+                  fraction(t.astray, t.frames), fraction(t.lost, t.frames), t.switches,
+                  fraction(t.in_view, t.frames), cells.back().wall_s);
       std::fflush(stdout);
     }
   std::ofstream(json_path) << to_json(cells, seconds, width, height, signature);
