@@ -40,14 +40,14 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   int result = argus::apps::ok;
   argus::apps::add_run_command(app, result);
-  argus::apps::add_report_command(app, result);
-  argus::apps::add_sweep_command(app, result);
   argus::apps::add_validate_command(app, result);
   argus::apps::add_plan_command(app, result);
   argus::apps::add_render_command(app, result);
   argus::apps::add_feeds_command(app, result);
   argus::apps::add_vision_command(app, result);
   argus::apps::add_csp_command(app, result);
+  argus::apps::add_report_command(app, result);
+  argus::apps::add_sweep_command(app, result);
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {

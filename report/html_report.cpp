@@ -17,15 +17,21 @@ std::string cell(const nlohmann::json& value) {
     return fmt::format("<td class=\"number\">{:.4g}</td>", value.get<double>());
   if (value.is_number()) return fmt::format("<td class=\"number\">{}</td>", value.dump());
   if (value.is_string()) return "<td>" + html_escape(value.get<std::string>()) + "</td>";
-  if (value.is_array()) return fmt::format("<td>{} entries</td>", value.size());
+  if (value.is_array())
+    return fmt::format("<td>{} {}</td>", value.size(), value.size() == 1 ? "entry" : "entries");
   return "<td>" + html_escape(value.dump()) + "</td>";
 }
 
 // Columns of a list of objects: every key, nested objects one level deep ("group_size.mean"),
-// in order of first appearance.
+// the naming keys first, then in order of first appearance.
 std::vector<std::pair<std::string, std::string>> columns_of(const nlohmann::json& rows) {
   std::vector<std::pair<std::string, std::string>> out;
   std::set<std::string> seen;
+  // What names a row comes first; JSON objects arrive with their keys sorted.
+  for (const char* key : {"task", "pedestrian", "camera"})
+    for (const auto& row : rows)
+      if (row.is_object() && row.contains(key) && seen.insert(key).second)
+        out.emplace_back(key, "");
   for (const auto& row : rows) {
     if (!row.is_object()) continue;
     for (const auto& [key, value] : row.items()) {
