@@ -35,7 +35,7 @@ int report(const report_arguments& args) {
   try {
     const auto outcome = report::build_reports(args.dir, scenario ? &*scenario : nullptr);
     for (const auto& file : outcome.written) std::cout << "  wrote " << file.string() << '\n';
-    for (const auto& note : outcome.skipped) std::cout << "  left out " << note << '\n';
+    for (const auto& note : outcome.left_out) std::cout << "  left out: " << note << '\n';
   } catch (const std::exception& e) {
     std::cerr << "argus report: " << e.what() << '\n';
     return run_failed;

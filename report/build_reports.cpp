@@ -53,13 +53,13 @@ class report_builder {
     if (given == nullptr) {
       const auto file = dir_ / "scenario.yaml";
       if (!std::filesystem::exists(file)) {
-        outcome_.skipped.push_back("plan.png: no scenario.yaml in the folder (give --scenario)");
+        outcome_.left_out.push_back("plan.png (no scenario.yaml in the folder; give --scenario)");
         return;
       }
       try {
         loaded = config::load_scenario(file);
       } catch (const config::scenario_error& e) {
-        outcome_.skipped.push_back(fmt::format("plan.png: {}", e.what()));
+        outcome_.left_out.push_back(fmt::format("plan.png ({})", e.what()));
         return;
       }
       given = &*loaded;
@@ -68,21 +68,21 @@ class report_builder {
     try {
       station = world::station::load(world::layout_path(*given));
     } catch (const std::exception& e) {
-      outcome_.skipped.push_back(fmt::format("plan.png: station layout: {}", e.what()));
+      outcome_.left_out.push_back(fmt::format("plan.png (station layout: {})", e.what()));
       return;
     }
     target_paths paths;
     if (auto targets = csv_table::read(dir_ / "targets.csv"))
       paths = target_paths_from(*targets);
     else
-      outcome_.skipped.push_back("plan.png: no targets.csv, so no target paths");
+      outcome_.left_out.push_back("target paths on plan.png (no targets.csv)");
     add_image("plan.png", "the targets' paths, coloured by the camera observing them",
               render_plan_report(*station, given->cameras, paths));
   }
 
   void timeline(const std::optional<event_log>& events, double length_s) {
     if (!events) {
-      outcome_.skipped.push_back("timeline.png: no events.jsonl");
+      outcome_.left_out.push_back("timeline.png (no events.jsonl)");
       return;
     }
     add_image("timeline.png", "task groups, leaders and failures over time",

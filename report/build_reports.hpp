@@ -8,10 +8,10 @@
 
 namespace argus::report {
 
-/// What build_reports wrote, and what it could not draw and why.
+/// What build_reports wrote, and what it left out and why ("plan.png (no scenario.yaml ...)").
 struct report_outcome {
   std::vector<std::filesystem::path> written;
-  std::vector<std::string> skipped;
+  std::vector<std::string> left_out;
 };
 
 /// (Re)builds a run's reports in its output folder `dir` from the files the run left there

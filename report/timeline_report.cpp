@@ -16,7 +16,7 @@ namespace argus::report {
 namespace {
 
 constexpr int width_px = 1200;
-constexpr int left_px = 130;
+constexpr int left_px = 200;
 constexpr int right_px = 24;
 constexpr int title_px = 34;
 constexpr int task_header_px = 24;

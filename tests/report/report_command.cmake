@@ -36,7 +36,7 @@ endforeach()
 # An older run: events and summary only. No plan without a scenario; the rest is drawn.
 file(MAKE_DIRECTORY ${OUT}/events_only)
 file(COPY ${DATA}/events.jsonl ${DATA}/summary.json DESTINATION ${OUT}/events_only)
-expect_report(${OUT}/events_only "left out plan\\.png: no scenario\\.yaml")
+expect_report(${OUT}/events_only "left out: plan\\.png \\(no scenario\\.yaml")
 expect_files(${OUT}/events_only timeline.png report.html)
 if(EXISTS ${OUT}/events_only/plan.png)
   message(FATAL_ERROR "a plan was drawn without a scenario")
@@ -45,7 +45,7 @@ endif()
 # A scenario but no targets: the plan without paths.
 file(MAKE_DIRECTORY ${OUT}/no_targets)
 file(COPY ${DATA}/scenario.yaml DESTINATION ${OUT}/no_targets)
-expect_report(${OUT}/no_targets "left out plan\\.png: no targets\\.csv")
+expect_report(${OUT}/no_targets "left out: target paths on plan\\.png \\(no targets\\.csv\\)")
 expect_files(${OUT}/no_targets plan.png report.html)
 
 # An empty folder still gets a page saying what is missing.
