@@ -12,13 +12,13 @@
 #include "apps/child_process.hpp"
 #include "apps/commands.hpp"
 #include "apps/option_checks.hpp"
-#include "apps/sweep_grid.hpp"
 #include "apps/sweep_progress.hpp"
 #include "config/duration.hpp"
 #include "config/scenario_error.hpp"
 #include "config/scenario_loader.hpp"
 #include "fmt/format.h"
 #include "report/binary_file.hpp"
+#include "report/sweep_grid.hpp"
 #include "report/sweep_outputs.hpp"
 
 namespace argus::apps {
@@ -63,7 +63,7 @@ bool finished(const std::filesystem::path& run_dir) {
 }
 
 std::vector<config::field_override> overrides_of(const std::vector<report::swept_parameter>& ps,
-                                                 const planned_run& run) {
+                                                 const report::planned_run& run) {
   std::vector<config::field_override> out;
   for (std::size_t k = 0; k < ps.size(); ++k) out.push_back({ps[k].key, run.values[k]});
   return out;
@@ -71,7 +71,7 @@ std::vector<config::field_override> overrides_of(const std::vector<report::swept
 
 std::vector<std::string> run_arguments(const sweep_arguments& args,
                                        const std::vector<report::swept_parameter>& parameters,
-                                       const planned_run& run,
+                                       const report::planned_run& run,
                                        const std::filesystem::path& run_dir) {
   std::vector<std::string> out{"run",
                                args.scenario,
@@ -98,17 +98,18 @@ class sweep {
   sweep(const sweep_arguments& args, std::vector<report::swept_parameter> parameters,
         std::filesystem::path dir)
       : args_(args), parameters_(std::move(parameters)), dir_(std::move(dir)) {
-    runs_ = plan_runs(parameters_, args.seeds);
+    runs_ = report::plan_runs(parameters_, args.seeds);
   }
 
   int execute() {
-    std::vector<const planned_run*> to_do;
+    std::vector<const report::planned_run*> to_do;
     for (const auto& run : runs_)
       if (!finished(run_dir(run))) to_do.push_back(&run);
     sweep_progress progress(runs_.size(), runs_.size() - to_do.size(), isatty(STDERR_FILENO) != 0);
     install_interrupt_handler();
     const std::string program = args_.program.empty() ? this_executable() : args_.program;
-    std::map<pid_t, std::pair<const planned_run*, std::chrono::steady_clock::time_point>> running;
+    std::map<pid_t, std::pair<const report::planned_run*, std::chrono::steady_clock::time_point>>
+        running;
     std::size_t next = 0;
     while (true) {
       while (!interrupted && running.size() < args_.jobs && next < to_do.size()) {
@@ -142,7 +143,9 @@ class sweep {
   }
 
  private:
-  std::filesystem::path run_dir(const planned_run& run) const { return dir_ / "runs" / run.id; }
+  std::filesystem::path run_dir(const report::planned_run& run) const {
+    return dir_ / "runs" / run.id;
+  }
 
   static void slot(pid_t from, pid_t to) {
     for (auto& pid : running_children)
@@ -190,12 +193,22 @@ class sweep {
   const sweep_arguments& args_;
   std::vector<report::swept_parameter> parameters_;
   std::filesystem::path dir_;
-  std::vector<planned_run> runs_;
+  std::vector<report::planned_run> runs_;
 };
 
 int run_sweep(const sweep_arguments& args) {
   std::vector<report::swept_parameter> parameters;
-  for (const auto& text : args.set) parameters.push_back(*parse_swept_parameter(text));
+  for (const auto& text : args.set) {
+    parameters.push_back(*report::parse_swept_parameter(text));
+    for (std::size_t k = 0; k + 1 < parameters.size(); ++k)
+      if (parameters[k].key == parameters.back().key) {
+        std::cerr << fmt::format(
+            "argus sweep: --set: {} given twice; list all its values in one --set, e.g. "
+            "{}=a,b\n",
+            parameters.back().key, parameters.back().key);
+        return bad_input;
+      }
+  }
   if (args.duration) {
     const auto d = config::parse_duration(*args.duration);
     if (!d || d->count() <= 0.0) {
@@ -210,7 +223,7 @@ int run_sweep(const sweep_arguments& args) {
   // not a folder of failed runs.
   std::string scenario_name;
   try {
-    for (const auto& run : plan_runs(parameters, 1))
+    for (const auto& run : report::plan_runs(parameters, 1))
       scenario_name = config::load_scenario(args.scenario, overrides_of(parameters, run)).name;
   } catch (const config::scenario_error& e) {
     std::cerr << e.what() << '\n';
@@ -230,7 +243,7 @@ int run_sweep(const sweep_arguments& args) {
 CLI::Validator swept_parameter_text() {
   return CLI::Validator(
       [](const std::string& text) -> std::string {
-        if (parse_swept_parameter(text)) return {};
+        if (report::parse_swept_parameter(text)) return {};
         return fmt::format(
             "expected KEY=V1,V2,... with KEY a dotted scenario path, e.g. "
             "network.loss_probability=0,0.1,0.2, got '{}'",

@@ -23,6 +23,10 @@ class timeline_builder {
     const double t = e.value("t", 0.0);
     const int task = static_cast<int>(integer_field(e, "task"));
     const int camera = static_cast<int>(integer_field(e, "camera"));
+    const bool about_a_task = kind == "task_issued" || kind == "task_created" || kind == "joined" ||
+                              kind == "left_task" || kind == "leader_changed" ||
+                              kind == "handoff" || kind == "task_cancelled";
+    if (about_a_task && task < 0) return;  // no task named: nothing to place it in
     if (kind == "task_issued") {
       auto& open = task_at(task, t);
       open.done.pedestrian = static_cast<int>(integer_field(e, "pedestrian"));

@@ -1,11 +1,11 @@
-#include "apps/sweep_grid.hpp"
+#include "report/sweep_grid.hpp"
 
 #include <cctype>
 #include <set>
 
 #include "config/field_override.hpp"
 
-namespace argus::apps {
+namespace argus::report {
 
 namespace {
 
@@ -32,7 +32,7 @@ std::string folder_safe(const std::string& text) {
 }
 
 // The last segment of each key, unless two keys share it: then the whole key.
-std::vector<std::string> short_names(const std::vector<report::swept_parameter>& parameters) {
+std::vector<std::string> short_names(const std::vector<swept_parameter>& parameters) {
   std::vector<std::string> out;
   std::multiset<std::string> lasts;
   for (const auto& p : parameters) {
@@ -47,16 +47,16 @@ std::vector<std::string> short_names(const std::vector<report::swept_parameter>&
 
 }  // namespace
 
-std::optional<report::swept_parameter> parse_swept_parameter(std::string_view text) {
+std::optional<swept_parameter> parse_swept_parameter(std::string_view text) {
   const auto field = config::parse_field_override(text);
   if (!field) return std::nullopt;
-  report::swept_parameter out{field->path, split_outside_brackets(field->value)};
+  swept_parameter out{field->path, split_outside_brackets(field->value)};
   for (const auto& value : out.values)
     if (value.empty()) return std::nullopt;
   return out;
 }
 
-std::vector<planned_run> plan_runs(const std::vector<report::swept_parameter>& parameters,
+std::vector<planned_run> plan_runs(const std::vector<swept_parameter>& parameters,
                                    std::uint64_t seeds) {
   std::vector<std::vector<std::string>> points{{}};
   for (const auto& p : parameters) {
@@ -70,14 +70,20 @@ std::vector<planned_run> plan_runs(const std::vector<report::swept_parameter>& p
   }
   const auto names = short_names(parameters);
   std::vector<planned_run> out;
+  std::set<std::string> prefixes;
   for (const auto& point : points) {
     std::string prefix;
     for (std::size_t k = 0; k < point.size(); ++k)
       prefix += folder_safe(names[k]) + "=" + folder_safe(point[k]) + "__";
+    // Values that differ only in characters a folder name cannot hold ("[1, 2]", "[1,2]")
+    // would share a folder: the later point is numbered.
+    const std::string base = prefix;
+    for (int n = 2; !prefixes.insert(prefix).second; ++n)
+      prefix = base + "v" + std::to_string(n) + "__";
     for (std::uint64_t seed = 1; seed <= seeds; ++seed)
       out.push_back({prefix + "seed=" + std::to_string(seed), point, seed});
   }
   return out;
 }
 
-}  // namespace argus::apps
+}  // namespace argus::report
