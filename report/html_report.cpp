@@ -1,5 +1,6 @@
 #include "report/html_report.hpp"
 
+#include <algorithm>
 #include <set>
 
 #include "fmt/format.h"
@@ -104,8 +105,11 @@ std::string metrics_section(const nlohmann::json& metrics) {
 
 // The event log as JSON inside a script element. '<' is written as \u003c so that no string
 // in it can close the element.
-std::string embedded_events(const event_log& log) {
-  const std::string json = nlohmann::json(log.events).dump();
+std::string embedded_events(const event_log& log, std::size_t most) {
+  const auto end =
+      log.events.begin() + static_cast<std::ptrdiff_t>(std::min(most, log.events.size()));
+  const std::string json =
+      nlohmann::json(std::vector<nlohmann::json>(log.events.begin(), end)).dump();
   std::string out;
   out.reserve(json.size());
   for (char c : json) {
@@ -157,6 +161,10 @@ std::string render_html_report(const html_report_input& input) {
   if (!input.images.empty()) html += "<h2>Pictures</h2>\n" + images_section(input.images);
   html += "<h2>Event log</h2>\n";
   if (input.events != nullptr) {
+    if (input.events->events.size() > input.max_events)
+      html += fmt::format(
+          "<p>The page holds the first {} of the run's {} events; events.jsonl has them all.</p>\n",
+          input.max_events, input.events->events.size());
     html +=
         "<div id=\"log-controls\"><select id=\"log-kind\"><option value=\"\">every kind"
         "</option></select> <input id=\"log-text\" type=\"search\" "
@@ -165,7 +173,7 @@ std::string render_html_report(const html_report_input& input) {
         "<div class=\"scroll\"><table id=\"log\"><thead><tr><th>t (s)</th><th>tick</th>"
         "<th>source</th><th>kind</th><th>details</th></tr></thead><tbody id=\"log-body\">"
         "</tbody></table></div>\n<script type=\"application/json\" id=\"events-data\">" +
-        embedded_events(*input.events) + "</script>\n";
+        embedded_events(*input.events, input.max_events) + "</script>\n";
   } else {
     html += "<p>No events.jsonl in this run's folder.</p>\n";
   }

@@ -26,6 +26,9 @@ struct html_report_input {
   nlohmann::json run_summary;
   /// events.jsonl, for the searchable log; null when absent.
   const event_log* events = nullptr;
+  /// The most events the page embeds: a run of thousands of cameras logs millions, and a page
+  /// of that size would not open. The page says when it holds fewer than the log.
+  std::size_t max_events = 200000;
 };
 
 /// report.html: one self-contained page (images as base64 `data:` URIs, the event log as

@@ -35,6 +35,18 @@ TEST(html_report, images_inline_and_metrics_tables) {
   EXPECT_EQ(html.find("https://"), std::string::npos);
 }
 
+TEST(html_report, holds_at_most_max_events_and_says_so) {
+  const auto log = event_log::parse(
+      "{\"t\":1.0,\"kind\":\"a\"}\n{\"t\":2.0,\"kind\":\"b\"}\n{\"t\":3.0,\"kind\":\"c\"}\n");
+  html_report_input input;
+  input.events = &log;
+  input.max_events = 2;
+  const auto html = render_html_report(input);
+  EXPECT_NE(html.find("the first 2 of the run's 3 events"), std::string::npos);
+  EXPECT_NE(html.find("\"kind\":\"b\""), std::string::npos);
+  EXPECT_EQ(html.find("\"kind\":\"c\""), std::string::npos);
+}
+
 TEST(html_report, says_what_is_missing) {
   const auto html = render_html_report({});
   EXPECT_NE(html.find("No metrics.json"), std::string::npos);
