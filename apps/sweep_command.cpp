@@ -219,6 +219,10 @@ int run_sweep(const sweep_arguments& args) {
       return bad_input;
     }
   }
+  if (!args.program.empty() && access(args.program.c_str(), X_OK) != 0) {
+    std::cerr << fmt::format("argus sweep: --argus: {} is not an executable file\n", args.program);
+    return bad_input;
+  }
   // Every grid point is validated before any run starts: a bad key or value is one message,
   // not a folder of failed runs.
   std::string scenario_name;

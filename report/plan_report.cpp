@@ -39,7 +39,7 @@ class path_painter {
       if (k == 0) continue;
       const auto& a = samples[k - 1];
       if (!a.present || b.t_s - a.t_s > max_joined_gap_s) continue;
-      const bgr colour = b.observed_by >= 0 ? camera_colour(b.observed_by) : unobserved_colour;
+      const bgr colour = a.observed_by >= 0 ? camera_colour(a.observed_by) : unobserved_colour;
       cv::line(image_, px(a.x_m, a.y_m), px(b.x_m, b.y_m), scalar_of(colour), 3, cv::LINE_AA);
     }
     if (first == nullptr) return;
