@@ -1,7 +1,8 @@
 #!/bin/sh
 # Stands in for `argus run` in the sweep tests: takes the same arguments, logs that it started,
-# takes FAKE_RUN_SECONDS (default 0.3) and writes a metrics.json whose summary depends on the
-# seed and on the --set values, through a rename, as a run that is not interrupted does.
+# takes FAKE_RUN_SECONDS (default 0.3; 60 for seed FAKE_SLOW_SEED, a run the test interrupts) and
+# writes a metrics.json whose summary depends on the seed and on the --set values, through a
+# rename, as a run that is not interrupted does.
 out="" seed=0 sets=""
 while [ $# -gt 0 ]; do
   case "$1" in
@@ -14,6 +15,8 @@ done
 [ -n "$out" ] || { echo "fake_run: no --out" >&2; exit 2; }
 mkdir -p "$out"
 echo "start $(basename "$out")" >> "$out/../../invocations.log"
+# exec: the sweep's SIGTERM then stops the sleep itself, leaving nothing behind.
+[ "$seed" = "${FAKE_SLOW_SEED:-none}" ] && exec sleep 60
 sleep "${FAKE_RUN_SECONDS:-0.3}"
 loss=0
 for s in $sets; do
