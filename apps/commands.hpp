@@ -25,6 +25,13 @@ void add_vision_command(CLI::App& app, int& result);
 /// Adds `argus csp` (conflict resolution: `solve` a file, regenerate `table1`) to `app`.
 void add_csp_command(CLI::App& app, int& result);
 
+/// Adds `argus report` (a run's pictures and page) to `app`; sets `result` to its exit code.
+void add_report_command(CLI::App& app, int& result);
+
+/// Adds `argus sweep` (a grid of runs over seeds, in parallel) to `app`; sets `result` to its
+/// exit code.
+void add_sweep_command(CLI::App& app, int& result);
+
 /// Adds `argus validate` to `app`; its callback sets `result` to the command's exit code.
 void add_validate_command(CLI::App& app, int& result);
 

@@ -9,6 +9,8 @@
 #include "actors/run_scenario.hpp"
 #include "apps/commands.hpp"
 #include "apps/option_checks.hpp"
+#include "apps/run_record.hpp"
+#include "apps/set_option.hpp"
 #include "apps/task_option.hpp"
 #include "config/duration.hpp"
 #include "config/scenario_error.hpp"
@@ -27,6 +29,7 @@ struct run_arguments {
   std::optional<double> speed;
   std::optional<std::string> duration;
   std::optional<std::string> out;
+  std::vector<std::string> set;
   bool json = false;
   bool no_progress = false;
   bool video = false;
@@ -67,7 +70,8 @@ void apply_overrides(const run_arguments& args, config::scenario& s) {
 }
 
 void print_outcome(const run_arguments& args, const config::scenario& s,
-                   const actors::run_outcome& outcome) {
+                   const actors::run_outcome& outcome,
+                   const std::optional<std::filesystem::path>& report) {
   const auto& r = outcome.result;
   if (args.json) {
     nlohmann::json j;
@@ -83,6 +87,7 @@ void print_outcome(const run_arguments& args, const config::scenario& s,
     j["summary"] = (outcome.output_dir / "summary.json").string();
     j["metrics"] = (outcome.output_dir / "metrics.json").string();
     if (args.video) j["video"] = (outcome.output_dir / "video" / "feeds.avi").string();
+    if (report) j["report"] = report->string();
     std::cout << j.dump() << '\n';
     return;
   }
@@ -97,6 +102,7 @@ void print_outcome(const run_arguments& args, const config::scenario& s,
   eval::print_metrics_table(std::cout, outcome.evaluation);
   if (args.video)
     std::cout << "  video:   " << (outcome.output_dir / "video" / "feeds.avi").string() << '\n';
+  if (report) std::cout << "  report:  " << report->string() << '\n';
   if (!r.unexpected_down.empty())
     std::cout << "  participants that died unexpectedly: " << r.unexpected_down.size() << '\n';
 }
@@ -115,6 +121,7 @@ void add_run_command(CLI::App& app, int& result) {
       ->check(number_in(0.0, HUGE_VAL));
   cmd->add_option("--duration", args->duration, "Virtual duration, e.g. '90 s' or '2 min'");
   cmd->add_option("--out", args->out, "Output directory (default out/<scenario name>)");
+  add_set_option(cmd, args->set);
   cmd->add_flag("--json", args->json, "Print the outcome as one JSON object");
   cmd->add_flag("--no-progress", args->no_progress, "No progress line, even on a terminal");
   cmd->add_flag("--video", args->video,
@@ -129,7 +136,7 @@ void add_run_command(CLI::App& app, int& result) {
   cmd->callback([args, &result] {
     config::scenario scenario;
     try {
-      scenario = load_with_tasks(args->scenario, args->tasks);
+      scenario = load_with_tasks(args->scenario, overrides_from(args->set), args->tasks);
     } catch (const config::scenario_error& e) {
       std::cerr << e.what() << '\n';
       result = bad_input;
@@ -143,7 +150,8 @@ void add_run_command(CLI::App& app, int& result) {
     try {
       options.show_progress = !args->no_progress && isatty(STDERR_FILENO) != 0;
       auto outcome = actors::run_scenario(scenario, options);
-      print_outcome(*args, scenario, outcome);
+      const auto report = record_run(scenario, outcome.output_dir);
+      print_outcome(*args, scenario, outcome, report);
       result = ok;
     } catch (const std::exception& e) {
       std::cerr << "argus run: " << e.what() << '\n';

@@ -52,19 +52,21 @@ YAML::Node task_node(const std::string& text) {
 
 }  // namespace
 
-config::scenario load_with_tasks(const std::string& file, const std::vector<std::string>& tasks) {
-  if (tasks.empty()) return config::load_scenario(file);
+config::scenario load_with_tasks(const std::string& file,
+                                 std::span<const config::field_override> overrides,
+                                 const std::vector<std::string>& tasks) {
+  if (tasks.empty()) return config::load_scenario(file, overrides);
   std::vector<YAML::Node> added;
   for (const auto& t : tasks) added.push_back(task_node(t));
   // The file's own problems are reported against the file, as without --task.
-  auto scenario = config::load_scenario(file);
+  auto scenario = config::load_scenario(file, overrides);
   auto root = YAML::LoadFile(file);
   if (!root["tasks"] || root["tasks"].IsNull())
     root["tasks"] = YAML::Node(YAML::NodeType::Sequence);
   for (auto& n : added) root["tasks"].push_back(n);
   YAML::Emitter out;
   out << root;
-  auto merged = config::parse_scenario(out.c_str(), file);
+  auto merged = config::parse_scenario(out.c_str(), file, overrides);
   merged.source_path = scenario.source_path;
   return merged;
 }

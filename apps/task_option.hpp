@@ -1,8 +1,10 @@
 #pragma once
 
+#include <span>
 #include <string>
 #include <vector>
 
+#include "config/field_override.hpp"
 #include "config/scenario.hpp"
 
 namespace argus::apps {
@@ -11,6 +13,9 @@ namespace argus::apps {
 /// `key=value,...` with the keys of a scenario's task (`at=10s,camera=7,pixel=160x120`; a
 /// pixel as XxY). They are validated like the file's own tasks (config::scenario_error);
 /// a malformed option throws CLI::ValidationError naming `--task`.
-config::scenario load_with_tasks(const std::string& file, const std::vector<std::string>& tasks);
+/// `overrides` (`--set`) apply first, as without --task.
+config::scenario load_with_tasks(const std::string& file,
+                                 std::span<const config::field_override> overrides,
+                                 const std::vector<std::string>& tasks);
 
 }  // namespace argus::apps

@@ -2,6 +2,7 @@
 #include <iostream>
 
 #include "apps/commands.hpp"
+#include "apps/set_option.hpp"
 #include "config/scenario_error.hpp"
 #include "config/scenario_loader.hpp"
 #include "config/scenario_writer.hpp"
@@ -13,10 +14,12 @@ void add_validate_command(CLI::App& app, int& result) {
       "validate",
       "Check a scenario file and print its effective configuration (defaults filled in) as YAML");
   auto path = std::make_shared<std::string>();
+  auto set = std::make_shared<std::vector<std::string>>();
   cmd->add_option("SCENARIO", *path, "Scenario YAML file")->required();
-  cmd->callback([path, &result] {
+  add_set_option(cmd, *set);
+  cmd->callback([path, set, &result] {
     try {
-      auto scenario = config::load_scenario(*path);
+      auto scenario = config::load_scenario(*path, overrides_from(*set));
       std::cout << config::to_yaml(scenario);
       result = ok;
     } catch (const config::scenario_error& e) {

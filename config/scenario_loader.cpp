@@ -12,6 +12,7 @@
 #include <memory>
 
 #include "config/mapping_reader.hpp"
+#include "config/yaml_override.hpp"
 #include "config/yaml_reader.hpp"
 
 namespace argus::config {
@@ -524,6 +525,11 @@ problem whole_file_problem(const std::string& file, std::string message) {
 }  // namespace
 
 scenario parse_scenario(std::string_view yaml_text, const std::string& source_name) {
+  return parse_scenario(yaml_text, source_name, {});
+}
+
+scenario parse_scenario(std::string_view yaml_text, const std::string& source_name,
+                        std::span<const field_override> overrides) {
   std::vector<YAML::Node> documents;
   try {
     documents = YAML::LoadAll(std::string{yaml_text});
@@ -540,16 +546,23 @@ scenario parse_scenario(std::string_view yaml_text, const std::string& source_na
                  {},
                  fmt::format("expected one YAML document, got {}", documents.size())}});
   }
+  YAML::Node document = documents.empty() ? YAML::Node{} : documents.front();
+  apply_overrides(document, overrides, source_name);
   scenario out;
   out.name = std::filesystem::path{source_name}.stem().string();
   out.source_path = source_name;
   yaml_reader reader(source_name);
-  scenario_parser(reader).parse(documents.empty() ? YAML::Node{} : documents.front(), out);
+  scenario_parser(reader).parse(document, out);
   if (!reader.problems().empty()) throw scenario_error(reader.take_problems());
   return out;
 }
 
 scenario load_scenario(const std::filesystem::path& file) {
+  return load_scenario(file, {});
+}
+
+scenario load_scenario(const std::filesystem::path& file,
+                       std::span<const field_override> overrides) {
   const auto name = file.string();
   const std::unique_ptr<std::FILE, int (*)(std::FILE*)> stream{std::fopen(name.c_str(), "rb"),
                                                                &std::fclose};
@@ -568,7 +581,7 @@ scenario load_scenario(const std::filesystem::path& file) {
     throw scenario_error(
         {whole_file_problem(name, fmt::format("cannot open file: {}", std::strerror(errno)))});
   }
-  return parse_scenario(text, name);
+  return parse_scenario(text, name, overrides);
 }
 
 }  // namespace argus::config

@@ -60,9 +60,11 @@
 /// Durations always carry a unit (ms, s, min, h; see duration.hpp).
 
 #include <filesystem>
+#include <span>
 #include <string>
 #include <string_view>
 
+#include "config/field_override.hpp"
 #include "config/scenario.hpp"
 #include "config/scenario_error.hpp"
 
@@ -74,8 +76,17 @@ namespace argus::config {
 /// scenario.
 scenario load_scenario(const std::filesystem::path& file);
 
+/// load_scenario with `overrides` (`--set KEY=VALUE`) put into the YAML tree first, so they are
+/// validated like the file's own values.
+scenario load_scenario(const std::filesystem::path& file,
+                       std::span<const field_override> overrides);
+
 /// load_scenario for text already in memory; `source_name` names it in problems, gives
 /// the default `name` (its stem) and becomes `source_path`.
 scenario parse_scenario(std::string_view yaml_text, const std::string& source_name);
+
+/// parse_scenario with `overrides` applied to the YAML tree before validation.
+scenario parse_scenario(std::string_view yaml_text, const std::string& source_name,
+                        std::span<const field_override> overrides);
 
 }  // namespace argus::config

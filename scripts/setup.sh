@@ -11,6 +11,7 @@ argus_packages=(
   libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri
   libyaml-cpp-dev libcli11-dev libspdlog-dev libfmt-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev clang-format
+  chromium  # the report test loads report.html in headless Chromium
 )
 
 argus_install_missing() {

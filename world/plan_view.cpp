@@ -27,9 +27,8 @@ class painter {
   }
 
   cv::Point px(const vec2& p) const {
-    const double height = where_.plan().size_m.y();
-    return {static_cast<int>(std::lround(margin_px + p.x() * options_.pixels_per_m)),
-            static_cast<int>(std::lround(margin_px + (height - p.y()) * options_.pixels_per_m))};
+    const auto [column, row] = plan_pixel(where_, options_, p);
+    return {column, row};
   }
 
   cv::Rect rect(const box& b) const {
@@ -193,6 +192,13 @@ class painter {
 };
 
 }  // namespace
+
+std::array<int, 2> plan_pixel(const station& where, const plan_view_options& options,
+                              const vec2& at) {
+  const double height = where.plan().size_m.y();
+  return {static_cast<int>(std::lround(margin_px + at.x() * options.pixels_per_m)),
+          static_cast<int>(std::lround(margin_px + (height - at.y()) * options.pixels_per_m))};
+}
 
 std::vector<unsigned char> render_plan_view(const station& where,
                                             std::span<const config::camera_settings> cameras,

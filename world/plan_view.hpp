@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <filesystem>
 #include <map>
 #include <span>
@@ -21,6 +22,11 @@ struct plan_view_options {
   double wedge_range_m = 30.0;
   bool labels = true;
 };
+
+/// Where the plan view draws the point `at` (metres on the plan): pixel column and row of the
+/// image render_plan_view returns with the same options, for drawing over it.
+std::array<int, 2> plan_pixel(const station& where, const plan_view_options& options,
+                              const vec2& at);
 
 /// Draws the plan view like the paper's Fig. 1 (north up): regions, walls and obstacles,
 /// portals (yellow), ticket booths, benches, vending machines, stairs, the cameras with their

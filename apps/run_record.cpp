@@ -1,0 +1,41 @@
+#include "apps/run_record.hpp"
+
+#include <iostream>
+
+#include "actors/run_scenario.hpp"
+#include "config/scenario_writer.hpp"
+#include "report/binary_file.hpp"
+#include "report/build_reports.hpp"
+#include "world/layout_loader.hpp"
+
+namespace argus::apps {
+
+namespace {
+
+// The scenario as its copy in the output folder must say it: relative paths were relative to
+// the original file's folder.
+config::scenario with_absolute_paths(config::scenario s) {
+  if (!s.world.layout.empty())
+    s.world.layout = std::filesystem::absolute(world::layout_path(s)).lexically_normal().string();
+  if (!s.sensing.sensor_model.empty())
+    s.sensing.sensor_model =
+        std::filesystem::absolute(actors::sensor_model_path(s)).lexically_normal().string();
+  return s;
+}
+
+}  // namespace
+
+std::optional<std::filesystem::path> record_run(const config::scenario& scenario,
+                                                const std::filesystem::path& output_dir) {
+  try {
+    const auto copy = with_absolute_paths(scenario);
+    report::write_file(output_dir / "scenario.yaml", config::to_yaml(copy));
+    report::build_reports(output_dir, &copy);
+    return output_dir / "report.html";
+  } catch (const std::exception& e) {
+    std::cerr << "argus run: reports not written: " << e.what() << '\n';
+    return std::nullopt;
+  }
+}
+
+}  // namespace argus::apps

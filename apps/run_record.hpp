@@ -1,0 +1,18 @@
+#pragma once
+
+#include <filesystem>
+#include <optional>
+
+#include "config/scenario.hpp"
+
+namespace argus::apps {
+
+/// What a run leaves in its output folder besides the simulation's own files: the effective
+/// scenario (`scenario.yaml`, --set overrides applied, file paths made absolute so the copy
+/// loads from anywhere: `argus report` draws the plan from it) and the reports
+/// (report/build_reports.hpp). Returns report.html's path, or nothing when the reports could not
+/// be written (said on stderr: a run that finished is not failed by its pictures).
+std::optional<std::filesystem::path> record_run(const config::scenario& scenario,
+                                                const std::filesystem::path& output_dir);
+
+}  // namespace argus::apps

@@ -1,0 +1,31 @@
+# A small real sweep: argus sweep starts `argus run` itself, two at a time, with each run's
+# seed, --set values and folder, and records their exit status.
+#   cmake -DARGUS=... -DSCENARIO=... -DOUT=dir -P sweep_real_runs.cmake
+cmake_minimum_required(VERSION 3.25)
+file(REMOVE_RECURSE "${OUT}")
+execute_process(COMMAND ${ARGUS} sweep ${SCENARIO} --seeds 2 --set world.population=5,10
+                        --duration "2 s" --jobs 2 --out ${OUT}
+                RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT code EQUAL 0)
+  message(FATAL_ERROR "sweep: exit ${code}\n${out}\n${err}")
+endif()
+file(STRINGS ${OUT}/sweep.csv rows)
+list(LENGTH rows row_count)
+if(NOT row_count EQUAL 5)
+  message(FATAL_ERROR "sweep.csv has ${row_count} lines, expected a header and 4 runs")
+endif()
+foreach(id population=5__seed=1 population=5__seed=2 population=10__seed=1 population=10__seed=2)
+  if(NOT EXISTS ${OUT}/runs/${id}/events.jsonl OR NOT EXISTS ${OUT}/runs/${id}/report.html)
+    message(FATAL_ERROR "run ${id} left no events.jsonl or report.html")
+  endif()
+  file(READ ${OUT}/runs/${id}/scenario.yaml effective)
+  string(REGEX MATCH "population: [0-9]+" said "${effective}")
+  string(REGEX REPLACE "population=([0-9]+)__.*" "population: \\1" wanted "${id}")
+  if(NOT said STREQUAL wanted)
+    message(FATAL_ERROR "run ${id}: its scenario.yaml says '${said}'")
+  endif()
+endforeach()
+list(GET rows 1 first)
+if(NOT first MATCHES "^population=5__seed=1,5,1,0,")
+  message(FATAL_ERROR "sweep.csv first row: '${first}'")
+endif()
