@@ -104,16 +104,17 @@ TEST(kernel_scales, paper_scales_miss_a_small_person_in_a_large_frame) {
 }
 
 TEST(kernel_scales, target_scales_span_half_to_twice_the_size_in_quarter_octaves) {
-  // A 30 x 90 patch: the kernel of its area has l = 11.7 (71 x 24, about 30 x 90's area).
-  EXPECT_NEAR(kernel_size_for({30.0, 90.0}), 11.74, 0.01);
-  EXPECT_EQ(target_scales({30.0, 90.0}, 576), (std::vector<int>{6, 7, 8, 10, 12, 14, 17, 20, 23}));
+  // A 30 x 90 patch: the kernel of its area has l = 14.67 (6l + 1 = 89 rows, 2l + 1 = 30.3
+  // columns); the sizes for 0.5, 0.59, ..., 2 times it.
+  EXPECT_NEAR(kernel_size_for({30.0, 90.0}), 14.67, 0.01);
+  EXPECT_EQ(target_scales({30.0, 90.0}, 576), (std::vector<int>{7, 9, 10, 12, 15, 18, 21, 25, 30}));
   // Clamped to 1 and to the largest kernel that fits the frame (6l + 1 <= 240: l <= 39).
   EXPECT_EQ(target_scales({2.0, 3.0}, 240).front(), 1);
   EXPECT_EQ(target_scales({100.0, 300.0}, 240).back(), 39);
   // One size when span is 1.
   scale_settings exact;
   exact.span = 1.0;
-  EXPECT_EQ(target_scales({30.0, 90.0}, 576, exact), (std::vector<int>{12}));
+  EXPECT_EQ(target_scales({30.0, 90.0}, 576, exact), (std::vector<int>{15}));
   scale_settings bad;
   bad.span = 0.5;
   EXPECT_THROW(target_scales({30.0, 90.0}, 576, bad), std::invalid_argument);
