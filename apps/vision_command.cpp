@@ -86,19 +86,20 @@ struct calibrate_arguments {
   // localiser's kernels; the default poses see most of them only a few pixels high.
   std::optional<double> field_of_view_deg;
   // Localiser kernels: around each pedestrian's size, or l = (0.1..1) x h / scale_divisor
-  // (7 is the paper's).
-  std::string scales = "target";
+  // (7 is the paper's); --scale-divisor alone means the paper's, as before --scales existed.
+  std::optional<std::string> scales;
   std::optional<double> scale_divisor;
   std::string out;
 };
 
 int calibrate(const calibrate_arguments& args) {
-  if (args.scale_divisor && args.scales != "paper") {
+  const std::string scales = args.scales.value_or(args.scale_divisor ? "paper" : "target");
+  if (args.scale_divisor && scales != "paper") {
     std::cerr << "argus vision calibrate: --scale-divisor: applies to --scales paper only\n";
     return bad_input;
   }
   vision::scale_settings kernels;
-  if (args.scales == "paper") kernels.rule = vision::scale_rule::paper;
+  if (scales == "paper") kernels.rule = vision::scale_rule::paper;
   kernels.paper_divisor = args.scale_divisor.value_or(kernels.paper_divisor);
   const auto start_s = seconds_of(args.start);
   const auto duration_s = seconds_of(args.duration);
@@ -180,9 +181,8 @@ int calibrate(const calibrate_arguments& args) {
         args.scenario, args.start, args.duration, args.every, args.cameras, args.width, args.height,
         args.seed ? fmt::format(" --seed {}", *args.seed) : "",
         args.field_of_view_deg ? fmt::format(" --field-of-view {}", *args.field_of_view_deg) : "",
-        args.scales,
-        args.scale_divisor ? fmt::format(" --scale-divisor {}", *args.scale_divisor) : "", args.out,
-        rates.trials, rates.miss, rates.confusion);
+        scales, args.scale_divisor ? fmt::format(" --scale-divisor {}", *args.scale_divisor) : "",
+        args.out, rates.trials, rates.miss, rates.confusion);
     out << vision::to_yaml(model);
     std::cout << fmt::format("{}: {} cameras, {} trials; model written to {}\n", scenario.name,
                              cameras.size(), rates.trials, args.out);
@@ -245,7 +245,7 @@ void add_vision_command(CLI::App& app, int& result) {
       ->check(number_in(1.0, 179.0));
   fit->add_option("--scales", calibration->scales,
                   "Localiser kernel sizes: 'target' (default: around each pedestrian's size) or "
-                  "'paper' (l = (0.1..1) x h / D)")
+                  "'paper' (l = (0.1..1) x h / D; the default when --scale-divisor is given)")
       ->check(kernel_scales_option(false));
   fit->add_option("--scale-divisor", calibration->scale_divisor,
                   "With --scales paper: D (default 7, the paper's; larger for small "
