@@ -606,11 +606,13 @@ std::vector<localized_region> multiscale_localizer::localize(const cv::Mat& back
         scores_.push_back(score(kernel_domain(centre, l) & image));
         best_score = std::max(best_score, scores_.back());
       }
+      int chosen = -1;  // sizes may come in any order
       for (std::size_t k = 0; k < scale_count; ++k)
-        if (scores_[k] >= near_best_score * best_score && scales_[k] >= best_scale) {
-          best_scale = scales_[k];
+        if (scores_[k] >= near_best_score * best_score && scales_[k] > chosen) {
+          chosen = scales_[k];
           box_score = scores_[k];
         }
+      best_scale = chosen;
     }
 
     // Step 5: accept the box of size l* centred at (x*, y*) by its score.

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 #include <stdexcept>
 
@@ -118,6 +119,22 @@ TEST(kernel_scales, target_scales_span_half_to_twice_the_size_in_quarter_octaves
   scale_settings bad;
   bad.span = 0.5;
   EXPECT_THROW(target_scales({30.0, 90.0}, 576, bad), std::invalid_argument);
+}
+
+// A user's list in any order: the same box as sorted.
+TEST(kernel_scales, explicit_sizes_in_any_order_give_the_same_box) {
+  const cv::Size frame(320, 240);
+  cv::Mat before = floor_of(frame, 1);
+  const cv::Rect patch_box = draw_person(before, {80, 120}, 60);
+  cv::Mat after = floor_of(frame, 2);
+  draw_person(after, {200, 120}, 66);
+  auto settings = localizer_settings_for({}, cv::Size2d(patch_box.size()), 240, 0.5, 1);
+  const auto sorted = find_patch(after, before(patch_box), settings);
+  std::reverse(settings.scales.begin(), settings.scales.end());
+  const auto reversed = find_patch(after, before(patch_box), settings);
+  ASSERT_EQ(sorted.size(), 1u);
+  ASSERT_EQ(reversed.size(), 1u);
+  EXPECT_EQ(sorted.front().box(), reversed.front().box());
 }
 
 TEST(kernel_scales, unknown_size_falls_back_to_the_paper_scales) {
