@@ -211,7 +211,8 @@ void add_vision_command(CLI::App& app, int& result) {
   cmd->add_option("--rho", args->rho, "Acceptance threshold on histogram intersection")
       ->check(number_in(0.0, 1.0));
   cmd->add_option("--single-scale", args->single_scale,
-                  "Swain-Ballard single-scale localisation with kernel size L (pixels)")
+                  "Swain-Ballard single-scale localisation with kernel size L (pixels); overrides "
+                  "--scales")
       ->check(integer_in(1, 100000));
   cmd->add_option("--scales", args->scales,
                   "Kernel sizes: 'target' (default: around the target patch's size, from half to "

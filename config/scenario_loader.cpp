@@ -21,8 +21,7 @@ namespace {
 // The keys each mapping allows, in schema order (the order "expected one of" lists them).
 constexpr std::array<std::string_view, 9> scenario_keys{
     "name", "run", "world", "cameras", "network", "controller", "sensing", "tasks", "faults"};
-constexpr std::array<std::string_view, 3> sensing_keys{"mode", "sensor_model",
-                                                      "tracker_scales"};
+constexpr std::array<std::string_view, 3> sensing_keys{"mode", "sensor_model", "tracker_scales"};
 constexpr std::array<std::string_view, 6> run_keys{"seed",  "duration", "tick",
                                                    "speed", "threads",  "output_dir"};
 constexpr std::array<std::string_view, 4> world_keys{"layout", "population", "spawn_rate_per_min",
