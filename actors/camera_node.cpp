@@ -509,7 +509,7 @@ caf::behavior camera_node(node_actor* self, const config::scenario& scenario,
   if (st.world) st.log = st.world->log;
   if (st.world) {
     if (scenario.sensing.mode == config::sensing_mode::pixels) {
-      st.pixels.emplace();
+      st.pixels.emplace(sensing::pixel_sensor::settings_for(scenario.sensing));
       st.imaging = vision::imaging_model::for_camera(camera.imaging, scenario.run.seed, camera.id);
     } else {
       st.emulated.emplace(st.world->sensor_model, scenario.run.seed, camera.id);

@@ -4,11 +4,11 @@
 #include <cmath>
 #include <memory>
 #include <opencv2/imgproc.hpp>
-#include <opencv2/videoio.hpp>
 #include <optional>
 #include <stdexcept>
 #include <system_error>
 
+#include "actors/mjpeg_avi_writer.hpp"
 #include "actors/ordered_inbox.hpp"
 #include "actors/participant_ids.hpp"
 #include "actors/render_pool.hpp"
@@ -27,7 +27,7 @@ namespace {
 struct video_file {
   std::filesystem::path final_path;
   std::filesystem::path partial_path;
-  cv::VideoWriter writer;
+  std::optional<mjpeg_avi_writer> writer;
 };
 
 /// One camera as the recorder sees it: where it looks and its imaging model, which is away
@@ -58,9 +58,9 @@ struct video_recorder_state {
 void finish_tick(caf::stateful_actor<video_recorder_state>* self) {
   auto& st = self->state;
   if (st.file) {
-    st.file->writer.write(st.mosaic);
+    st.file->writer->write(st.mosaic);
     if (st.ctx->tick() + 1 >= st.settings.end_tick) {
-      st.file->writer.release();
+      st.file->writer->close();
       std::error_code ignored;
       std::filesystem::rename(st.file->partial_path, st.file->final_path, ignored);
       st.file.reset();
@@ -184,8 +184,7 @@ caf::actor spawn_video_recorder(caf::actor_system& system, video_settings settin
     throw std::invalid_argument("video: tiles must be at least 16x16 pixels");
   auto file = std::make_shared<video_file>();
   file->final_path = settings.file;
-  // `feeds.partial.avi` rather than `feeds.avi.partial`: OpenCV's writer refuses a name that
-  // does not end in .avi.
+  // `feeds.partial.avi` rather than `feeds.avi.partial`: players go by the extension.
   file->partial_path = settings.file;
   file->partial_path.replace_extension(".partial" + settings.file.extension().string());
   std::error_code ignored;
@@ -194,11 +193,7 @@ caf::actor spawn_video_recorder(caf::actor_system& system, video_settings settin
   const auto size = vision::feed_mosaic_layout::for_feeds(
                         settings.cameras.size(), settings.tile_width_px, settings.tile_height_px)
                         .size();
-  // OpenCV's own MJPEG/AVI writer: needs no FFmpeg.
-  file->writer.open(file->partial_path.string(), cv::CAP_OPENCV_MJPEG,
-                    cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), 1.0 / settings.tick_seconds, size);
-  if (!file->writer.isOpened())
-    throw std::runtime_error("cannot write " + file->partial_path.string());
+  file->writer.emplace(file->partial_path, 1.0 / settings.tick_seconds, size);
   return system.spawn(video_recorder, std::move(settings), std::move(file));
 }
 

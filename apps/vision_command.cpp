@@ -8,6 +8,8 @@
 #include <optional>
 
 #include "CLI/CLI.hpp"
+#include "apps/color_image.hpp"
+#include "apps/kernel_scales_option.hpp"
 #include "apps/option_checks.hpp"
 #include "apps/time_option.hpp"
 #include "config/duration.hpp"
@@ -16,10 +18,9 @@
 #include "config/ticks.hpp"
 #include "fmt/format.h"
 #include "nlohmann/json.hpp"
-#include "opencv2/imgcodecs.hpp"
-#include "vision/backprojection.hpp"
 #include "vision/imaging_model.hpp"
 #include "vision/multiscale_localizer.hpp"
+#include "vision/patch_search.hpp"
 #include "vision/renderer.hpp"
 #include "vision/sensor_calibration.hpp"
 #include "world/crowd.hpp"
@@ -37,33 +38,32 @@ struct localize_arguments {
   std::string target;
   double rho = 0.5;
   std::optional<int> single_scale;
+  std::string scales = "target";
   int max_regions = 16;
 };
 
+// The localiser's settings for `args` (--single-scale, --scales) on a `frame_height` high
+// image and a `patch`-sized target; explicit sizes are chosen among as under 'target'.
+vision::localizer_settings localize_settings(const localize_arguments& args, const cv::Size& patch,
+                                             int frame_height) {
+  vision::scale_settings scales;
+  if (args.scales == "paper") scales.rule = vision::scale_rule::paper;
+  auto settings = vision::localizer_settings_for(scales, cv::Size2d(patch), frame_height, args.rho,
+                                                 args.max_regions);
+  if (args.single_scale)
+    settings.scales = {*args.single_scale};
+  else if (args.scales != "target" && args.scales != "paper")
+    settings.scales = *kernel_size_list(args.scales);
+  return settings;
+}
+
 int localize(const localize_arguments& args) {
-  const cv::Mat image = cv::imread(args.image, cv::IMREAD_COLOR);
-  if (image.empty()) {
-    std::cerr << fmt::format("argus vision localize: --image: cannot read an image from '{}'\n",
-                             args.image);
-    return bad_input;
-  }
-  const cv::Mat patch = cv::imread(args.target, cv::IMREAD_COLOR);
-  if (patch.empty()) {
-    std::cerr << fmt::format("argus vision localize: --target: cannot read an image from '{}'\n",
-                             args.target);
-    return bad_input;
-  }
-  const auto target = vision::color_histogram::of_image(patch);
-  const auto bp = vision::backproject_target(image, target);
-  const auto score = vision::histogram_scorer(bp.bin_indices, target);
-  std::vector<vision::localized_region> found;
-  if (args.single_scale) {
-    found = vision::localize_single_scale(bp.backprojection, *args.single_scale, score, args.rho,
-                                          args.max_regions);
-  } else {
-    vision::multiscale_localizer localizer({{}, args.rho, args.max_regions});
-    found = localizer.localize(bp.backprojection, score);
-  }
+  const auto image = read_color_image("argus vision localize", "--image", args.image);
+  if (!image) return bad_input;
+  const auto patch = read_color_image("argus vision localize", "--target", args.target);
+  if (!patch) return bad_input;
+  const auto found =
+      vision::find_patch(*image, *patch, localize_settings(args, patch->size(), image->rows));
   auto regions = nlohmann::json::array();
   for (const auto& r : found)
     regions.push_back(
@@ -85,12 +85,22 @@ struct calibrate_arguments {
   // makes the target half the frame high), where pedestrians are tall enough for the
   // localiser's kernels; the default poses see most of them only a few pixels high.
   std::optional<double> field_of_view_deg;
-  // Localiser kernels l = (0.1..1) x h / scale_divisor; 7 is the paper's.
-  double scale_divisor = 7.0;
+  // Localiser kernels: around each pedestrian's size, or l = (0.1..1) x h / scale_divisor
+  // (7 is the paper's); --scale-divisor alone means the paper's, as before --scales existed.
+  std::optional<std::string> scales;
+  std::optional<double> scale_divisor;
   std::string out;
 };
 
 int calibrate(const calibrate_arguments& args) {
+  const std::string scales = args.scales.value_or(args.scale_divisor ? "paper" : "target");
+  if (args.scale_divisor && scales != "paper") {
+    std::cerr << "argus vision calibrate: --scale-divisor: applies to --scales paper only\n";
+    return bad_input;
+  }
+  vision::scale_settings kernels;
+  if (scales == "paper") kernels.rule = vision::scale_rule::paper;
+  kernels.paper_divisor = args.scale_divisor.value_or(kernels.paper_divisor);
   const auto start_s = seconds_of(args.start);
   const auto duration_s = seconds_of(args.duration);
   const auto every_s = seconds_of(args.every);
@@ -149,8 +159,7 @@ int calibrate(const calibrate_arguments& args) {
             camera.imaging.interlaced()
                 ? camera.imaging.apply(image, renderer.render(camera.view, frame, t + tick_s / 2.0))
                 : camera.imaging.apply(image);
-        auto more =
-            vision::pixel_trials(image, frame, *station, camera.view, 0.4, args.scale_divisor);
+        auto more = vision::pixel_trials(image, frame, *station, camera.view, 0.4, kernels);
         trials.insert(trials.end(), more.begin(), more.end());
       }
     }
@@ -167,12 +176,13 @@ int calibrate(const calibrate_arguments& args) {
     out << fmt::format(
         "# Emulated sensor error model (vision/sensor_model.hpp), fitted by:\n"
         "#   argus vision calibrate {} --start '{}' --duration '{}' --every '{}' --cameras {} "
-        "--width {} --height {}{}{} --scale-divisor {} --out {}\n"
+        "--width {} --height {}{}{} --scales {}{} --out {}\n"
         "# {} trials: miss rate {:.3f}, confusion rate {:.3f} (pixel pipeline)\n",
         args.scenario, args.start, args.duration, args.every, args.cameras, args.width, args.height,
         args.seed ? fmt::format(" --seed {}", *args.seed) : "",
         args.field_of_view_deg ? fmt::format(" --field-of-view {}", *args.field_of_view_deg) : "",
-        args.scale_divisor, args.out, rates.trials, rates.miss, rates.confusion);
+        scales, args.scale_divisor ? fmt::format(" --scale-divisor {}", *args.scale_divisor) : "",
+        args.out, rates.trials, rates.miss, rates.confusion);
     out << vision::to_yaml(model);
     std::cout << fmt::format("{}: {} cameras, {} trials; model written to {}\n", scenario.name,
                              cameras.size(), rates.trials, args.out);
@@ -201,8 +211,14 @@ void add_vision_command(CLI::App& app, int& result) {
   cmd->add_option("--rho", args->rho, "Acceptance threshold on histogram intersection")
       ->check(number_in(0.0, 1.0));
   cmd->add_option("--single-scale", args->single_scale,
-                  "Swain-Ballard single-scale localisation with kernel size L (pixels)")
+                  "Swain-Ballard single-scale localisation with kernel size L (pixels); overrides "
+                  "--scales")
       ->check(integer_in(1, 100000));
+  cmd->add_option("--scales", args->scales,
+                  "Kernel sizes: 'target' (default: around the target patch's size, from half to "
+                  "twice it), 'paper' ((0.1..1) x image height / 7, the paper's), or sizes L "
+                  "such as 5,8,12 (kernels of 6L + 1 x 2L + 1 pixels)")
+      ->check(kernel_scales_option());
   cmd->add_option("--max-regions", args->max_regions, "At most this many regions")
       ->check(integer_in(1, 1000000));
   cmd->callback([args, &result] { result = localize(*args); });
@@ -228,9 +244,13 @@ void add_vision_command(CLI::App& app, int& result) {
                   "Horizontal field of view of every camera, degrees (default: each camera's "
                   "own); zoomed poses as when tracking")
       ->check(number_in(1.0, 179.0));
+  fit->add_option("--scales", calibration->scales,
+                  "Localiser kernel sizes: 'target' (default: around each pedestrian's size) or "
+                  "'paper' (l = (0.1..1) x h / D; the default when --scale-divisor is given)")
+      ->check(kernel_scales_option(false));
   fit->add_option("--scale-divisor", calibration->scale_divisor,
-                  "Localiser kernel sizes l = (0.1..1) x h / D (default 7, the paper's; larger "
-                  "for small pedestrians)")
+                  "With --scales paper: D (default 7, the paper's; larger for small "
+                  "pedestrians)")
       ->check(number_in(1.0, 1000.0));
   fit->add_option("--out", calibration->out, "Model file to write (YAML)")->required();
   fit->callback([calibration, &result] { result = calibrate(*calibration); });

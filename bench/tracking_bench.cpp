@@ -31,6 +31,7 @@
 //
 // Usage: tracking_bench [--seconds S] [--cameras N] [--width PX --height PX]
 //                       [--signature first_frame|appearance] [--json FILE] [--scenario FILE]
+//                       [--scales target|paper]  (the tracker's kernel sizes; target by default)
 
 #include <algorithm>
 #include <chrono>
@@ -241,7 +242,8 @@ struct cell_result {
 
 cell_result run_cell(const config::scenario& scenario, std::shared_ptr<const world::station> where,
                      vision::renderer& render, const density& d, const noise_level& n,
-                     double seconds, std::size_t cameras, signature_source signature) {
+                     double seconds, std::size_t cameras, signature_source signature,
+                     const vision::tracker_settings& tracking) {
   const auto started = std::chrono::steady_clock::now();
   auto settings = world::crowd_settings::from(scenario);
   settings.population = d.population;
@@ -275,7 +277,8 @@ cell_result run_cell(const config::scenario& scenario, std::shared_ptr<const wor
         const cv::Rect box = cv::Rect(p.box) & cv::Rect(0, 0, width, height);
         f.track.emplace(signature == signature_source::first_frame
                             ? vision::color_histogram::of_region(image, inner_part(box))
-                            : vision::appearance_signature(crowd.current()->find(p.id)->look));
+                            : vision::appearance_signature(crowd.current()->find(p.id)->look),
+                        tracking);
         f.track->start(box);
         f.fsm.emplace(vision::ptz_limits::from(*f.camera), scenario.controller);
       }
@@ -351,6 +354,7 @@ std::string to_json(const std::vector<cell_result>& cells, double seconds, int w
   std::fprintf(stderr,
                "tracking_bench: %s\nusage: tracking_bench [--seconds S] [--cameras N] "
                "[--width PX --height PX] [--signature first_frame|appearance] [--json FILE] "
+               "[--scales target|paper] "
                "[--scenario FILE]\n",
                why.c_str());
   std::exit(2);
@@ -364,6 +368,7 @@ int main(int argc, char** argv) {
   int width = 320, height = 240;
   std::string json_path = "tracking_bench.json";
   signature_source signature = signature_source::first_frame;
+  vision::tracker_settings tracking;
   std::string scenario_path = ARGUS_SOURCE_DIR "/scenarios/penn_station.yaml";
   for (int i = 1; i < argc; ++i) {
     const std::string_view flag = argv[i];
@@ -388,6 +393,11 @@ int main(int argc, char** argv) {
         usage(fmt::format("--signature is first_frame or appearance, not {}", value));
       else if (flag == "--scenario")
         scenario_path = value;
+      else if (flag == "--scales" && (value == "target" || value == "paper"))
+        tracking.scales.rule =
+            value == "paper" ? vision::scale_rule::paper : vision::scale_rule::target;
+      else if (flag == "--scales")
+        usage(fmt::format("--scales is target or paper, not {}", value));
       else
         usage(fmt::format("unknown option {}", flag));
     } catch (const std::logic_error&) {
@@ -414,7 +424,8 @@ int main(int argc, char** argv) {
               "wall_s");
   for (const auto& d : densities)
     for (const auto& n : noise_levels(width, height)) {
-      cells.push_back(run_cell(scenario, where, render, d, n, seconds, cameras, signature));
+      cells.push_back(
+          run_cell(scenario, where, render, d, n, seconds, cameras, signature, tracking));
       const auto t = total_of(cells.back());
       std::printf("%-8s %-9s %7zu %7d %7.3f %7.3f %7.3f %7.3f %7.3f %8d %8.3f %6.1f\n", d.name,
                   n.name, cells.back().targets.size(), t.frames, fraction(t.held, t.frames),

@@ -126,4 +126,13 @@ struct enum_names<control_strategy> {
   }};
 };
 
+/// Names for the sensing `tracker_scales`.
+template <>
+struct enum_names<tracker_scales> {
+  static constexpr std::array<enum_entry<tracker_scales>, 2> entries{{
+      {tracker_scales::target, "target"},
+      {tracker_scales::paper, "paper"},
+  }};
+};
+
 }  // namespace argus::config

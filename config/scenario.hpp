@@ -149,12 +149,18 @@ enum class merge_rule { highest_id, negotiation };
 /// (Section III), or the emulated sensor (ground truth through a calibrated error model).
 enum class sensing_mode { pixels, emulated };
 
+/// The kernel sizes of the pixel trackers' multiscale localiser (Fig. 9): around the target's
+/// last box (vision::scale_rule::target), or the paper's (0.1 ... 1) x frame height / 7.
+enum class tracker_scales { target, paper };
+
 /// How camera nodes sense (Section III-A, B).
 struct sensing_settings {
   sensing_mode mode = sensing_mode::pixels;
   /// The emulated sensor's error model file (relative to the scenario file); empty = the
   /// model's defaults.
   std::string sensor_model;
+  /// Pixel sensing: the trackers' kernel sizes.
+  tracker_scales scales = tracker_scales::target;
   friend bool operator==(const sensing_settings&, const sensing_settings&) = default;
 };
 

@@ -22,7 +22,7 @@ namespace {
 // The keys each mapping allows, in schema order (the order "expected one of" lists them).
 constexpr std::array<std::string_view, 9> scenario_keys{
     "name", "run", "world", "cameras", "network", "controller", "sensing", "tasks", "faults"};
-constexpr std::array<std::string_view, 2> sensing_keys{"mode", "sensor_model"};
+constexpr std::array<std::string_view, 3> sensing_keys{"mode", "sensor_model", "tracker_scales"};
 constexpr std::array<std::string_view, 6> run_keys{"seed",  "duration", "tick",
                                                    "speed", "threads",  "output_dir"};
 constexpr std::array<std::string_view, 4> world_keys{"layout", "population", "spawn_rate_per_min",
@@ -377,6 +377,7 @@ class scenario_parser {
     mapping_reader sensing(reader_, node, "sensing", sensing_keys);
     sensing.read("mode", out.mode);
     sensing.read("sensor_model", out.sensor_model);
+    sensing.read("tracker_scales", out.scales);
   }
 
   void read_tasks(const YAML::Node& node, const std::vector<camera_settings>& cameras,

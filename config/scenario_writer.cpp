@@ -232,6 +232,7 @@ std::string to_yaml(const scenario& s) {
   out.line(0, "sensing:");
   out.entry(1, "mode", yaml_name(s.sensing.mode));
   out.entry(1, "sensor_model", quoted(s.sensing.sensor_model));
+  out.entry(1, "tracker_scales", yaml_name(s.sensing.scales));
 
   out.line(0, s.tasks.empty() ? "tasks: []" : "tasks:");
   for (const auto& each : s.tasks) out.line(1, task(each));

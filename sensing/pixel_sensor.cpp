@@ -6,6 +6,18 @@
 
 namespace argus::sensing {
 
+pixel_sensor::pixel_sensor(vision::tracker_settings settings) : settings_(settings) {
+  // nop
+}
+
+vision::tracker_settings pixel_sensor::settings_for(const config::sensing_settings& sensing) {
+  vision::tracker_settings settings;
+  settings.scales.rule = sensing.scales == config::tracker_scales::paper
+                             ? vision::scale_rule::paper
+                             : vision::scale_rule::target;
+  return settings;
+}
+
 std::vector<controller::look_result> pixel_sensor::look(
     const cv::Mat& bgr, const std::vector<controller::look_request>& looks) {
   std::map<controller::task_id, vision::tracker> kept;
@@ -13,7 +25,7 @@ std::vector<controller::look_result> pixel_sensor::look(
   for (const auto& l : looks) {
     auto it = trackers_.find(l.task);
     if (it == trackers_.end())
-      it = trackers_.emplace(l.task, vision::tracker(to_histogram(l.target))).first;
+      it = trackers_.emplace(l.task, vision::tracker(to_histogram(l.target), settings_)).first;
     const auto seen = it->second.update(bgr);
     out.push_back({l.task, seen.found, cv::Rect2d(seen.box), seen.score});
     kept.insert(trackers_.extract(it));
@@ -26,7 +38,7 @@ protocol::signature pixel_sensor::acquire(controller::task_id task, const cv::Ma
                                           const cv::Rect& box) {
   const auto region = box & cv::Rect(0, 0, bgr.cols, bgr.rows);
   auto histogram = vision::color_histogram::of_region(bgr, region);
-  vision::tracker t(histogram.normalized());
+  vision::tracker t(histogram.normalized(), settings_);
   t.start(region);
   trackers_.insert_or_assign(task, std::move(t));
   return to_signature(histogram);

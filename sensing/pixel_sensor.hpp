@@ -15,6 +15,12 @@ namespace argus::sensing {
 /// frames it is given.
 class pixel_sensor {
  public:
+  /// A sensor whose trackers use `settings`.
+  explicit pixel_sensor(vision::tracker_settings settings = {});
+
+  /// The trackers' settings for a scenario's `sensing` block (its tracker_scales).
+  static vision::tracker_settings settings_for(const config::sensing_settings& sensing);
+
   /// Looks for every requested target in `bgr`; trackers of targets no longer asked for are
   /// dropped, new ones search the whole frame.
   std::vector<controller::look_result> look(const cv::Mat& bgr,
@@ -25,6 +31,7 @@ class pixel_sensor {
   protocol::signature acquire(controller::task_id task, const cv::Mat& bgr, const cv::Rect& box);
 
  private:
+  vision::tracker_settings settings_;
   std::map<controller::task_id, vision::tracker> trackers_;
 };
 

@@ -3,7 +3,9 @@
 list(APPEND argus_vision_sources
   ${CMAKE_CURRENT_LIST_DIR}/color_histogram.cpp
   ${CMAKE_CURRENT_LIST_DIR}/backprojection.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/kernel_scales.cpp
   ${CMAKE_CURRENT_LIST_DIR}/multiscale_localizer.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/patch_search.cpp
   ${CMAKE_CURRENT_LIST_DIR}/tracker.cpp
   ${CMAKE_CURRENT_LIST_DIR}/fixate_zoom.cpp
   ${CMAKE_CURRENT_LIST_DIR}/relevance.cpp)

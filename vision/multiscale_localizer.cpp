@@ -6,10 +6,8 @@
 #include <cstdlib>
 #include <limits>
 #include <span>
-#include <stdexcept>
 #include <string_view>
 
-#include "fmt/format.h"
 #include "opencv2/imgproc.hpp"
 
 #if defined(__GNUC__) && defined(__x86_64__)
@@ -25,6 +23,9 @@ constexpr int tile_width = 32;
 constexpr int tile_height = 16;
 // Below this, the summed response counts as empty (rounding residue of the integral image).
 constexpr double empty_response = 1e-6;
+// With scale_choice::score, sizes whose box scores at least this fraction of the best compete,
+// and the largest wins (see localize()).
+constexpr double near_best_score = 0.97;
 // Marks points of the summed response inside an accepted box (B >= 0, so sums are >= 0).
 constexpr float suppressed = -1.0f;
 
@@ -265,18 +266,6 @@ region_scorer histogram_scorer(const cv::Mat& bin_indices, const color_histogram
     auto candidate = color_histogram::of_bin_indices(bin_indices, box, normalized_target.bins());
     return intersection(normalized_target, candidate.normalized());
   };
-}
-
-std::vector<int> paper_scales(int frame_height_px, double divisor) {
-  if (!(divisor > 0.0))
-    throw std::invalid_argument(fmt::format("paper_scales: divisor must be > 0, not {}", divisor));
-  std::vector<int> scales;
-  for (int k = 1; k <= 10; ++k) {
-    int l = static_cast<int>(std::lround(0.1 * k * frame_height_px / divisor));
-    l = std::max(l, 1);
-    if (scales.empty() || scales.back() != l) scales.push_back(l);
-  }
-  return scales;
 }
 
 cv::Rect kernel_domain(cv::Point centre, int l) {
@@ -564,49 +553,70 @@ std::vector<localized_region> multiscale_localizer::localize(const cv::Mat& back
     const cv::Point centre = find_peak(found, best);
     if (best <= empty_response) break;
 
-    // Step 3: per scale, B_l over the kernel domain and its peak.
-    offsets[0] = 0;
-    for (std::size_t k = 0; k < scale_count; ++k) {
-      domains[k] = kernel_domain(centre, scales_[k]) & image;
-      offsets[k + 1] = offsets[k] + static_cast<std::size_t>(domains[k].area());
-    }
-    domain_responses_.resize(offsets[scale_count]);
-    for (std::size_t k = 0; k < scale_count; ++k) {
-      float* response = domain_responses_.data() + offsets[k];
-      compute_response(scales_[k], domains[k], response);
-      peaks[k] = max_of(response, domains[k].area());
-    }
-    // Step 4: sum_K (peak - B_l)^2 per scale, each over its domain in row-major order. The
-    // scales' sums are independent chains of dependent adds: they advance four at a time,
-    // longest first, so that the adds overlap, each still in its own order.
-    for (std::size_t k = 0; k < scale_count; ++k) order[k] = k;
-    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-      return offsets[a + 1] - offsets[a] > offsets[b + 1] - offsets[b];
-    });
-    for (std::size_t group = 0; group < scale_count; group += 4) {
-      const std::size_t n = std::min<std::size_t>(4, scale_count - group);
-      chain chains[4];
-      for (std::size_t c = 0; c < n; ++c) {
-        const std::size_t k = order[group + c];
-        chains[c] = {domain_responses_.data() + offsets[k], offsets[k + 1] - offsets[k], peaks[k],
-                     0.0};
-      }
-      advance_chains(chains, n);
-      for (std::size_t c = 0; c < n; ++c) squares[order[group + c]] = chains[c].squares;
-    }
     int best_scale = scales_.front();
-    double best_sharpness = -1.0;
-    for (std::size_t k = 0; k < scale_count; ++k) {
-      const double sharpness = squares[k] / domains[k].area();
-      if (sharpness > best_sharpness) {
-        best_sharpness = sharpness;
-        best_scale = scales_[k];
+    double box_score = 0.0;
+    if (settings_.choice == scale_choice::sharpness) {
+      // Step 3: per scale, B_l over the kernel domain and its peak.
+      offsets[0] = 0;
+      for (std::size_t k = 0; k < scale_count; ++k) {
+        domains[k] = kernel_domain(centre, scales_[k]) & image;
+        offsets[k + 1] = offsets[k] + static_cast<std::size_t>(domains[k].area());
       }
+      domain_responses_.resize(offsets[scale_count]);
+      for (std::size_t k = 0; k < scale_count; ++k) {
+        float* response = domain_responses_.data() + offsets[k];
+        compute_response(scales_[k], domains[k], response);
+        peaks[k] = max_of(response, domains[k].area());
+      }
+      // Step 4: sum_K (peak - B_l)^2 per scale, each over its domain in row-major order. The
+      // scales' sums are independent chains of dependent adds: they advance four at a time,
+      // longest first, so that the adds overlap, each still in its own order.
+      for (std::size_t k = 0; k < scale_count; ++k) order[k] = k;
+      std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+        return offsets[a + 1] - offsets[a] > offsets[b + 1] - offsets[b];
+      });
+      for (std::size_t group = 0; group < scale_count; group += 4) {
+        const std::size_t n = std::min<std::size_t>(4, scale_count - group);
+        chain chains[4];
+        for (std::size_t c = 0; c < n; ++c) {
+          const std::size_t k = order[group + c];
+          chains[c] = {domain_responses_.data() + offsets[k], offsets[k + 1] - offsets[k], peaks[k],
+                       0.0};
+        }
+        advance_chains(chains, n);
+        for (std::size_t c = 0; c < n; ++c) squares[order[group + c]] = chains[c].squares;
+      }
+      double best_sharpness = -1.0;
+      for (std::size_t k = 0; k < scale_count; ++k) {
+        const double sharpness = squares[k] / domains[k].area();
+        if (sharpness > best_sharpness) {
+          best_sharpness = sharpness;
+          best_scale = scales_[k];
+        }
+      }
+
+      box_score = score(kernel_domain(centre, best_scale) & image);
+    } else {
+      // The largest size whose box scores within 3 % of the best: floor pixels at a box's
+      // margin cost it a little score, and a tracker whose next sizes follow this box would
+      // otherwise shrink it frame after frame.
+      scores_.clear();
+      double best_score = -1.0;
+      for (const int l : scales_) {
+        scores_.push_back(score(kernel_domain(centre, l) & image));
+        best_score = std::max(best_score, scores_.back());
+      }
+      int chosen = -1;  // sizes may come in any order
+      for (std::size_t k = 0; k < scale_count; ++k)
+        if (scores_[k] >= near_best_score * best_score && scales_[k] > chosen) {
+          chosen = scales_[k];
+          box_score = scores_[k];
+        }
+      best_scale = chosen;
     }
 
     // Step 5: accept the box of size l* centred at (x*, y*) by its score.
     const auto box = kernel_domain(centre, best_scale) & image;
-    const double box_score = score(box);
     if (!(box_score > settings_.rho)) break;
     found.push_back({box.x, box.y, box.width, box.height, box_score, best_scale});
 

@@ -12,10 +12,12 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "opencv2/core.hpp"
 #include "vision/color_histogram.hpp"
+#include "vision/kernel_scales.hpp"
 
 namespace argus::vision {
 
@@ -41,19 +43,21 @@ using region_scorer = std::function<double(const cv::Rect&)>;
 /// is bin_index_image() of the original image; both must outlive the scorer.
 region_scorer histogram_scorer(const cv::Mat& bin_indices, const color_histogram& target);
 
-/// The kernel sizes l = (0.1, 0.2, ..., 1) x h / 7 for a frame h pixels high, each rounded
-/// to the nearest integer and at least 1, duplicates removed (Section III-B). With another
-/// `divisor` d, l = (0.1, ..., 1) x h / d: the largest kernel, 6 h / d + 1 rows, is 86 % of
-/// the frame height at the paper's d = 7, taller than any pedestrian a wide view shows; a
-/// larger d (e.g. 28) suits small pedestrians. Throws std::invalid_argument unless d > 0.
-std::vector<int> paper_scales(int frame_height_px, double divisor = 7.0);
-
 /// The domain of the (6l + 1) x (2l + 1) kernel of size l centred at `centre` (not clipped).
 cv::Rect kernel_domain(cv::Point centre, int l);
 
 /// B_l = B * K_l (Fig. 9, step 1) with zero borders, by a direct double loop. Slow; a
 /// reference for tests. l = 0 is the 1 x 1 kernel.
 cv::Mat box_response_reference(const cv::Mat& backprojection, int l);
+
+/// How step 4 of Fig. 9 picks the kernel size l* at the peak (x*, y*): the paper's sharpest
+/// response, or by the acceptance test of step 5 (the largest size whose box scores within
+/// 3 % of the best). On real video
+/// the sharpness favours the largest kernel of any range (each kernel's sums grow with its area
+/// over cluttered backgrounds, and so do their differences): over sizes from half to twice a
+/// person's it gave boxes twice her area, missing 78 % of searches where the acceptance score
+/// missed 17 % (bench/RESULTS.md, issue 19).
+enum class scale_choice { sharpness, score };
 
 /// Settings of the localiser.
 struct localizer_settings {
@@ -63,7 +67,16 @@ struct localizer_settings {
   double rho = 0.5;
   /// At most this many regions per call (the paper repeats until the first rejection).
   int max_regions = 16;
+  /// How step 4 picks the kernel size.
+  scale_choice choice = scale_choice::sharpness;
 };
+
+/// The localiser's settings under `scales` for a frame `frame_height_px` high and a target
+/// expected to be `target` (if known): kernel_scales(), and step 4 by the acceptance score
+/// under scale_rule::target (by the paper's sharpness under scale_rule::paper).
+localizer_settings localizer_settings_for(const scale_settings& scales,
+                                          const std::optional<cv::Size2d>& target,
+                                          int frame_height_px, double rho, int max_regions);
 
 /// The multiscale localiser of Fig. 9. Keeps its buffers between calls; not thread-safe, one
 /// per camera. With a single scale it is Swain and Ballard's localisation [45].
@@ -81,7 +94,8 @@ class multiscale_localizer {
   /// Step 2: (x*, y*) = argmax sum_l B_l.
   /// Step 3: per l, the peak (x_l*, y_l*) of B_l inside K_l centred at (x*, y*).
   /// Step 4: l* = argmax_l sum_{K}(B_l(x_l*, y_l*) - B_l(x, y))^2 / |K|, over K clipped to
-  ///         the image.
+  ///         the image (with scale_choice::score instead: the largest l whose box centred at
+  ///         (x*, y*) scores at least 0.97 max_l score, and steps 3 and 4 are not computed).
   /// Step 5: the box of size l* centred at (x*, y*) is accepted if score(box) > rho.
   /// Step 6: the box is set to 0 and steps 1-5 are repeated. We zero it in B and recompute
   ///         the B_l around it (only where a kernel reaches it): "remove from B_l ... repeat
@@ -141,6 +155,8 @@ class multiscale_localizer {
   std::vector<int> tile_order_;
   // Steps 3 and 4: B_l over its kernel domain for every l, one after the other.
   std::vector<float> domain_responses_;
+  // Step 4 with scale_choice::score: each size's score.
+  std::vector<double> scores_;
 };
 
 /// Swain and Ballard's single-scale localisation [45] with the (6l + 1) x (2l + 1) kernel of

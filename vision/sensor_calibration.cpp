@@ -46,13 +46,12 @@ Eigen::VectorXd fit_logistic(const Eigen::MatrixXd& x, const Eigen::VectorXd& y,
 
 std::vector<calibration_trial> pixel_trials(const cv::Mat& frame_bgr, const world::snapshot& frame,
                                             const world::station& where, const camera_view& view,
-                                            double rho, double scale_divisor) {
+                                            double rho, const scale_settings& scales) {
   std::vector<calibration_trial> trials;
   const auto seen = visible_pedestrians(frame, where, view);
   std::vector<color_histogram> signatures;
   for (const auto& v : seen) signatures.push_back(appearance_signature(frame.find(v.id)->look));
   const cv::Rect2d image(0.0, 0.0, frame_bgr.cols, frame_bgr.rows);
-  multiscale_localizer localizer({paper_scales(frame_bgr.rows, scale_divisor), rho, 1});
   const sensor_model limits;
   for (std::size_t i = 0; i < seen.size(); ++i) {
     calibration_trial trial;
@@ -61,6 +60,8 @@ std::vector<calibration_trial> pixel_trials(const cv::Mat& frame_bgr, const worl
     trial.similarity = largest_similarity(seen, i, signatures, limits.max_occlusion);
     const double area = (seen[i].box & image).area();
     const auto bp = backproject_target(frame_bgr, signatures[i], std::max(area, 1.0));
+    multiscale_localizer localizer(
+        localizer_settings_for(scales, seen[i].box.size(), frame_bgr.rows, rho, 1));
     const auto found =
         localizer.localize(bp.backprojection, histogram_scorer(bp.bin_indices, signatures[i]));
     trial.missed = true;

@@ -9,6 +9,7 @@
 
 #include "opencv2/core.hpp"
 #include "vision/emulated_sensor.hpp"
+#include "vision/kernel_scales.hpp"
 #include "vision/sensor_model.hpp"
 
 namespace argus::vision {
@@ -36,10 +37,11 @@ struct calibration_trial {
 /// backprojected (T scaled to its true box area, as the tracker does) and the first region of
 /// the multiscale localiser (rho = `rho`) is compared with the true boxes: its centre inside
 /// the pedestrian's box is a hit, inside another's (nearest first) a confusion, else a miss.
-/// The localiser's kernels are paper_scales(frame height, `scale_divisor`).
+/// The localiser's kernels are kernel_scales(`scales`) around the pedestrian's true box, the
+/// size a tracker knows from its last box.
 std::vector<calibration_trial> pixel_trials(const cv::Mat& frame_bgr, const world::snapshot& frame,
                                             const world::station& where, const camera_view& view,
-                                            double rho = 0.4, double scale_divisor = 7.0);
+                                            double rho = 0.4, const scale_settings& scales = {});
 
 /// The same trials answered by the emulated sensor's look_for().
 std::vector<calibration_trial> emulated_trials(emulated_sensor& sensor,

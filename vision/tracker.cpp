@@ -18,7 +18,8 @@ void tracker::start(const cv::Rect& box) {
 }
 
 std::optional<track_observation> tracker::find_in(const cv::Mat& bin_indices,
-                                                  const cv::Rect& window, int frame_height) {
+                                                  const cv::Rect& window,
+                                                  const localizer_settings& localizing) {
   if (window.empty()) return std::nullopt;
   const cv::Mat indices = bin_indices(window);
   auto image =
@@ -26,7 +27,7 @@ std::optional<track_observation> tracker::find_in(const cv::Mat& bin_indices,
   std::optional<double> area;
   if (box_) area = static_cast<double>(box_->area());
   auto b = backproject(indices, ratio_histogram(target_, image, area));
-  localizer_ = multiscale_localizer({paper_scales(frame_height), settings_.rho, 1});
+  localizer_ = multiscale_localizer(localizing);
   auto found = localizer_.localize(b, histogram_scorer(indices, target_));
   if (found.empty()) return std::nullopt;
   return track_observation{true, found.front().box() + window.tl(), found.front().score};
@@ -35,14 +36,18 @@ std::optional<track_observation> tracker::find_in(const cv::Mat& bin_indices,
 track_observation tracker::update(const cv::Mat& bgr) {
   const auto indices = bin_index_image(bgr, target_.bins());
   const cv::Rect frame(0, 0, bgr.cols, bgr.rows);
+  std::optional<cv::Size2d> size;
+  if (box_) size = cv::Size2d(box_->size());
+  const auto localizing =
+      localizer_settings_for(settings_.scales, size, bgr.rows, settings_.rho, 1);
   std::optional<track_observation> seen;
   if (box_ && !lost_) {
     const int dx = static_cast<int>(std::lround(settings_.search_margin * box_->width));
     const int dy = static_cast<int>(std::lround(settings_.search_margin * box_->height));
     const cv::Rect window(box_->x - dx, box_->y - dy, box_->width + 2 * dx, box_->height + 2 * dy);
-    seen = find_in(indices, window & frame, bgr.rows);
+    seen = find_in(indices, window & frame, localizing);
   }
-  if (!seen && (settings_.search_whole_frame || !box_)) seen = find_in(indices, frame, bgr.rows);
+  if (!seen && (settings_.search_whole_frame || !box_)) seen = find_in(indices, frame, localizing);
   if (!seen) {
     lost_ = true;
     return {false, box_.value_or(cv::Rect{}), 0.0};

@@ -33,12 +33,16 @@ struct tracker_settings {
   double search_margin = 1.0;
   /// Look in the whole frame when the target is not in the search window.
   bool search_whole_frame = true;
+  /// The localiser's kernel sizes: by default around the last box's size (the paper's
+  /// frame-height scales until a box is known, or with scale_rule::paper).
+  scale_settings scales;
 };
 
 /// Follows one target frame to frame: backprojects its histogram in a window around the last
 /// position (ratio histogram of that window, T scaled to the last box's area), re-localises
-/// it with the multiscale localiser (Fig. 9) and accepts it by histogram intersection; if it
-/// is not there, looks in the whole frame; otherwise reports the track lost.
+/// it with the multiscale localiser (Fig. 9) at kernel sizes around the last box's
+/// (kernel_scales()) and accepts it by histogram intersection; if it is not there, looks in
+/// the whole frame; otherwise reports the track lost.
 class tracker {
  public:
   /// A tracker for the target with signature `target`.
@@ -61,7 +65,7 @@ class tracker {
 
  private:
   std::optional<track_observation> find_in(const cv::Mat& bin_indices, const cv::Rect& window,
-                                           int frame_height);
+                                           const localizer_settings& localizing);
 
   color_histogram target_;
   tracker_settings settings_;

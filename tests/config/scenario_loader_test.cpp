@@ -249,5 +249,12 @@ TEST(scenario_loader, rejects_a_second_document) {
   EXPECT_EQ(problems[0], (problem{"two.yaml", 3, 1, "", "expected one YAML document, got 2"}));
 }
 
+// The pixel trackers' kernel sizes: around the target by default, the paper's on request.
+TEST(scenario_loader, tracker_scales_default_to_the_target_and_read_paper) {
+  EXPECT_EQ(parse_scenario("name: a\n", "a.yaml").sensing.scales, tracker_scales::target);
+  EXPECT_EQ(parse_scenario("sensing: {tracker_scales: paper}\n", "a.yaml").sensing.scales,
+            tracker_scales::paper);
+}
+
 }  // namespace
 }  // namespace argus::config

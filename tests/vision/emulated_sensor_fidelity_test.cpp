@@ -21,7 +21,7 @@ namespace {
 // The calibration's conditions (see the header of scenarios/sensor_model.yaml): the zoom at
 // which cameras track, where pedestrians are 20-160 px high, and the smaller kernels.
 constexpr double field_of_view_deg = 20.0;
-constexpr double scale_divisor = 28.0;
+const scale_settings kernels{scale_rule::paper, 28.0};
 constexpr std::size_t cameras = 16;
 
 TEST(emulated_sensor_fidelity, rates_match_the_pixel_pipeline_on_a_held_out_run) {
@@ -62,7 +62,7 @@ TEST(emulated_sensor_fidelity, rates_match_the_pixel_pipeline_on_a_held_out_run)
       image = imaging[c].interlaced()
                   ? imaging[c].apply(image, render.render(views[c], frame, (tick + 0.5) * tick_s))
                   : imaging[c].apply(image);
-      auto p = pixel_trials(image, frame, *station, views[c], 0.4, scale_divisor);
+      auto p = pixel_trials(image, frame, *station, views[c], 0.4, kernels);
       pixels.insert(pixels.end(), p.begin(), p.end());
       auto e = emulated_trials(sensors[c], frame, *station, views[c]);
       emulated.insert(emulated.end(), e.begin(), e.end());

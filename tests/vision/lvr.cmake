@@ -5,6 +5,8 @@ set(argus_vision_lvr_tests
   backprojection_test
   multiscale_localizer_test
   multiscale_localizer_equivalence_test
+  kernel_scales_test
+  real_video_localization_test
   tracker_test
   fixate_zoom_test
   relevance_test

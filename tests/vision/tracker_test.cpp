@@ -44,6 +44,10 @@ cv::Rect draw_pedestrian(cv::Mat& image, cv::Point corner, int h, cv::Scalar shi
 //   frames 30-49   partial: the green pedestrian covers about half the target's width
 //   frames 60-69   full: behind the pillar
 //   frames 70-99   clear again
+//
+// While partly covered the target is held when the box lies on it (at least 80 % of the box
+// inside its true box): the kernel sizes follow its last box and the one chosen is the box the
+// acceptance test likes best, which is then its visible part, not the whole body.
 TEST(tracker, holds_through_partial_occlusion_and_regains_after_full) {
   const cv::Scalar red(30, 30, 200), blue(140, 60, 20), green(40, 170, 40), pink(180, 80, 230);
   const cv::Mat floor = background(3);
@@ -70,7 +74,8 @@ TEST(tracker, holds_through_partial_occlusion_and_regains_after_full) {
   for (int k = 1; k < 100; ++k) {
     auto frame = frame_at(k, truth, hidden);
     auto seen = t.update(frame);
-    if (k >= 30 && k < 50) held += seen.found && overlap(seen.box, truth) > 0.3 ? 1 : 0;
+    const bool on_target = seen.found && (seen.box & truth).area() >= 0.8 * seen.box.area();
+    if (k >= 30 && k < 50) held += on_target ? 1 : 0;
     if (hidden) lost_while_hidden += seen.found ? 0 : 1;
     if (k >= 75) regained += seen.found && overlap(seen.box, truth) > 0.5 ? 1 : 0;
     if (k < 30) {
