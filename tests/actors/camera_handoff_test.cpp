@@ -86,10 +86,10 @@ TEST(camera_handoff, the_group_carries_the_task_across_cameras_with_emulated_sen
 
 // With the trackers' default kernels (around the target's last box) camera 7 holds pedestrian
 // 12 for the whole of a 150 s run, so nothing is handed off; with the paper's frame-height
-// kernels it loses her within seconds and camera 8 takes the task over.
+// kernels, on the shipped degraded video, it loses her within 35 s and the group hands over.
 TEST(camera_handoff, the_group_carries_the_task_across_cameras_with_pixel_sensing) {
   const auto events =
-      run("penn_station.yaml", 25.0, "argus_handoff_pixels", config::tracker_scales::paper);
+      run("penn_station.yaml", 45.0, "argus_handoff_pixels", config::tracker_scales::paper);
   EXPECT_EQ(count(events, "task_created"), 1u);
   EXPECT_GE(count(events, "bid"), 1u);
   EXPECT_GE(count(events, "joined"), 1u);

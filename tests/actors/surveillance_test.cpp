@@ -80,8 +80,8 @@ TEST(surveillance, the_task_survives_the_crash_of_its_leader) {
   // Someone else carries the task after the crash.
   bool carried = false;
   for (const auto& row : o.evaluation.targets)
-    carried = carried || (row.sample.tick > 40 * 15 && row.observed_by >= 0 &&
-                          row.observed_by != leader);
+    carried =
+        carried || (row.sample.tick > 40 * 15 && row.observed_by >= 0 && row.observed_by != leader);
   EXPECT_TRUE(carried);
 }
 

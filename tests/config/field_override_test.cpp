@@ -17,7 +17,7 @@ cameras:
   - {id: 1, position: [1, 1]}
   - {id: 2, position: [9, 1]}
 tasks:
-  - {at: 2 s, pedestrian: 0, camera: 1, cameras_wanted: 2}
+  - {at: 2 s, pedestrian: 1, camera: 1, cameras_wanted: 2}
 )";
 
 scenario with(std::vector<field_override> overrides) {
