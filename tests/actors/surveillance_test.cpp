@@ -176,6 +176,34 @@ TEST(surveillance, the_operator_clicks_on_a_pedestrian_or_on_nobody) {
   EXPECT_EQ(refused, 1);
 }
 
+// Fig. 19: cameras 1 and 2 serve a first task; a second task arrives through camera 1, which
+// leaves the first group to lead it; the first group bids for camera 1, the conflict is
+// centralised and solved, and in the end each camera serves one task.
+TEST(surveillance, two_tasks_are_shared_out_through_conflict_resolution) {
+  auto s =
+      config::load_scenario(std::filesystem::path(ARGUS_SOURCE_DIR) / "scenarios/two_tasks.yaml");
+  s.sensing.mode = config::sensing_mode::emulated;
+  s.run.threads = 2;
+  s.run.output_dir = (std::filesystem::temp_directory_path() / "argus_surveil_fig19").string();
+  const auto o = run_scenario(s, false);
+  ASSERT_EQ(o.evaluation.tasks.size(), 2u);
+  bool conflict = false, solved = false;
+  std::map<int, int> task_of;  // camera -> task it performs at the end
+  for (const auto& e : events_of(o)) {
+    if (e["kind"] == "conflict" && e["task"] == 0 && e["with_tasks"].size() == 1 &&
+        e["with_tasks"][0] == 1)
+      conflict = true;
+    if (e["kind"] == "csp_solved" && e["groups"] == 2) solved = true;
+    if (e["kind"] == "task_created" || e["kind"] == "joined") task_of[e["camera"]] = e["task"];
+    if (e["kind"] == "left_task") task_of.erase(e["camera"].get<int>());
+  }
+  EXPECT_TRUE(conflict);
+  EXPECT_TRUE(solved);
+  EXPECT_EQ(task_of[1], 1);
+  EXPECT_EQ(task_of[2], 0);
+  for (const auto& m : o.evaluation.tasks) EXPECT_GT(m.coverage, 0.0) << "task " << m.task;
+}
+
 // MOTChallenge's rules for gt.txt (9 columns) and tracker files (10 columns): integer frames
 // from 1 to seqLength, integer ids >= 1, positive sizes, one box per id per frame.
 void expect_mot_file(const std::filesystem::path& file, std::size_t columns, int frames,
