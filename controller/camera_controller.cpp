@@ -347,6 +347,12 @@ void camera_controller::on_status(const protocol::status& s, controller_output& 
       leave_task("dropped", out);
     return;
   }
+  if (s.leader == me_.id && s.leaving) {
+    if (members_.erase(s.sender) != 0)
+      emit(out, "member_dropped",
+           fmt::format(R"("task":{},"member":{},"reason":"left")", s.task, s.sender));
+    return;
+  }
   if (s.leader == me_.id) {
     auto [it, fresh] = members_.emplace(s.sender, member_record{s.relevance, now_, now_});
     if (!fresh) {
@@ -457,6 +463,11 @@ void camera_controller::emit_leader_changed(int leader, int previous, std::strin
 
 void camera_controller::leave_task(std::string_view reason, controller_output& out) {
   if (!task_) return;
+  if (role_ == group_role::member) {
+    auto last = own_status();
+    last.leaving = true;
+    send(leader_, last, out);
+  }
   emit(out, "left_task",
        fmt::format(R"("task":{},"reason":"{}","role":"{}")", task_->task, reason,
                    role_ == group_role::leader ? "leader" : "member"));

@@ -156,7 +156,8 @@ auto fields(join& m) {
   return std::tie(m.task, m.leader, m.invitee, m.reassign);
 }
 auto fields(status& m) {
-  return std::tie(m.task, m.sender, m.leader, m.relevance, m.min_cameras, m.max_cameras, m.members);
+  return std::tie(m.task, m.sender, m.leader, m.relevance, m.min_cameras, m.max_cameras, m.members,
+                  m.leaving);
 }
 auto fields(handover& m) {
   return std::tie(m.task, m.old_leader, m.new_leader, m.members);

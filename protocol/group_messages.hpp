@@ -78,7 +78,9 @@ struct join {
 };
 
 /// The heartbeat of a group node, broadcast every heartbeat interval (Section IV-A). A
-/// leader's (`leader == sender`) lists its members; a member's carries its relevance.
+/// leader's (`leader == sender`) lists its members; a member's carries its relevance. A member
+/// that leaves its group says so once with `leaving` set, so that its leader does not count it
+/// (or hand the group to it) until its silence times out.
 struct status {
   task_id task = 0;
   int sender = 0;
@@ -87,6 +89,7 @@ struct status {
   std::uint16_t min_cameras = 1;
   std::uint16_t max_cameras = 1;
   std::vector<int> members;
+  bool leaving = false;
   friend bool operator==(const status&, const status&) = default;
 };
 

@@ -21,28 +21,36 @@ int pedestrian_at(const world::snapshot& frame, const world::station& where,
   return 0;
 }
 
-std::set<int> in_view(const world::snapshot& frame, const world::station& where,
-                      const vision::camera_view& view) {
+view_census in_view(const world::snapshot& frame, const world::station& where,
+                    const vision::camera_view& view) {
   const cv::Rect2d image(0.0, 0.0, view.width_px, view.height_px);
-  std::set<int> out;
-  for (const auto& seen : vision::visible_pedestrians(frame, where, view))
-    if (seen.occlusion <= max_occlusion && (seen.box & image).area() > 0.0) out.insert(seen.id);
+  // Wholly in view: two pixels clear of every edge, at most a fifth hidden, and near enough to
+  // be told apart (a fourteenth of the frame tall): what an operator would call "in the scene".
+  const cv::Rect2d inner(2.0, 2.0, view.width_px - 4.0, view.height_px - 4.0);
+  const double min_height = view.height_px / 14.0;
+  view_census out;
+  for (const auto& seen : vision::visible_pedestrians(frame, where, view)) {
+    if (seen.occlusion > max_occlusion || (seen.box & image).area() <= 0.0) continue;
+    out.seen.insert(seen.id);
+    if (seen.occlusion <= 0.2 && (seen.box & inner) == seen.box && seen.box.height >= min_height)
+      out.whole.insert(seen.id);
+  }
   return out;
 }
 
-int entry_watch::step(const std::set<int>& in_view_now) {
+int entry_watch::step(const view_census& now) {
   if (!primed_) {
-    prime(in_view_now);
+    prime(now);
     return 0;
   }
-  int entered = 0;
-  for (int id : in_view_now)
-    if (before_.count(id) == 0) {
-      entered = id;
-      break;
-    }
-  before_ = in_view_now;
-  return entered;
+  // Who left the view is no longer a candidate; who entered joins the end of the line.
+  std::erase_if(entrants_, [&](int id) { return now.seen.count(id) == 0; });
+  for (int id : now.seen)
+    if (before_.count(id) == 0) entrants_.push_back(id);
+  before_ = now.seen;
+  for (int id : entrants_)
+    if (now.whole.count(id) != 0) return id;
+  return 0;
 }
 
 }  // namespace argus::sensing

@@ -24,7 +24,7 @@ std::vector<group_message> one_of_each() {
   return {query_relevance{a_task(), 1, 4, true},
           bid,
           join{a_task(), 1, 9, true},
-          status{3, 9, 1, 0.5, 2, 3, {2, 9}},
+          status{3, 9, 1, 0.5, 2, 3, {2, 9}, true},
           handover{a_task(), 1, 9, {2, 9}},
           demotion{demotion_step::demote, 3, 1, {}},
           demotion{demotion_step::ack, 3, 1, {4, 5}},
