@@ -65,7 +65,9 @@ TEST(camera_handoff, the_group_carries_the_task_across_cameras_with_emulated_sen
   const auto events = run("penn_station_emulated.yaml", 150.0, "argus_handoff_emulated");
   EXPECT_EQ(count(events, "task_created"), 1u);
   EXPECT_GE(count(events, "joined"), 2u);
-  EXPECT_GE(count(events, "handoff"), 2u);
+  // A leader hands over at least once (members that left say so, and are never handed the
+  // group, so the leader keeps it longer than when it handed it to departed members).
+  EXPECT_GE(count(events, "handoff"), 1u);
   // Carried by at least three cameras in turn.
   std::set<int> carriers;
   for (const auto& e : events)
