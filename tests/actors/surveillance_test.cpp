@@ -190,7 +190,7 @@ TEST(surveillance, a_second_task_takes_a_camera_from_the_first_group) {
   ASSERT_EQ(o.evaluation.tasks.size(), 2u);
   bool joined_first = false, left_for_second = false, leads_second = false;
   for (const auto& e : events_of(o)) {
-    if (e["camera"] != 1) continue;
+    if (e.value("camera", 0) != 1) continue;
     if (e["kind"] == "joined" && e["task"] == 0) joined_first = true;
     if (e["kind"] == "left_task" && e["task"] == 0 && e["reason"] == "operator")
       left_for_second = joined_first;
