@@ -3,8 +3,8 @@
 #include <cstdint>
 #include <map>
 
-#include "actors/participant_info.hpp"
 #include "actors/oracle_board.hpp"
+#include "actors/participant_info.hpp"
 #include "actors/snapshot_board.hpp"
 #include "caf/actor.hpp"
 #include "caf/fwd.hpp"

@@ -18,6 +18,7 @@
 #include "actors/video_recorder.hpp"
 #include "actors/world_coordinator.hpp"
 #include "config/ticks.hpp"
+#include "config/whole_file.hpp"
 #include "eval/metrics.hpp"
 #include "eval/mot_export.hpp"
 #include "eval/run_files.hpp"
@@ -50,8 +51,8 @@ void evaluate_run(const config::scenario& scenario, const world::station& statio
   outcome.evaluation = eval::evaluate(scenario, station, log, events, end_tick);
   const auto metrics = eval::metrics_json(scenario, outcome.evaluation, outcome.result.wall_seconds,
                                           outcome.result.virtual_seconds);
-  eval::write_whole_file(dir / "metrics.json",
-                         [&](std::ostream& out) { out << metrics.dump(2) << "\n"; });
+  config::write_whole_file(dir / "metrics.json",
+                           [&](std::ostream& out) { out << metrics.dump(2) << "\n"; });
   eval::write_tracks(dir / "tracks.csv", log, tick_s);
   eval::write_targets(dir / "targets.csv", outcome.evaluation, tick_s);
   eval::write_poses(dir / "poses.csv", log, tick_s);
@@ -83,7 +84,8 @@ run_outcome run_scenario(const config::scenario& scenario, const run_options& op
   caf::actor video_participant;
   world_run_settings world_settings;
   world_settings.station = world::station::load(world::layout_path(scenario));
-  const auto world_settings_station = world_settings.station;
+  // Kept for the evaluation: world_settings goes to the world actors.
+  const auto station = world_settings.station;
   render_pool pool;
   const bool pixels = scenario.sensing.mode == config::sensing_mode::pixels;
   if (options.video || pixels)
@@ -173,7 +175,7 @@ run_outcome run_scenario(const config::scenario& scenario, const run_options& op
     caf::anon_send_exit(recorder, caf::exit_reason::user_shutdown);
     throw std::runtime_error("run failed: " + failure);
   }
-  evaluate_run(scenario, *world_settings_station, log->take(), end_tick, options, outcome);
+  evaluate_run(scenario, *station, log->take(), end_tick, options, outcome);
   return outcome;
 }
 

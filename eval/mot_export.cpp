@@ -3,11 +3,13 @@
 #include <cmath>
 #include <ostream>
 
-#include "eval/run_files.hpp"
+#include "config/whole_file.hpp"
 #include "fmt/format.h"
 #include "fmt/ostream.h"
 
 namespace argus::eval {
+
+using config::write_whole_file;
 
 std::string mot_sequence(int camera) {
   return fmt::format("cam{:02}", camera);

@@ -1,14 +1,15 @@
 #include "eval/run_files.hpp"
 
-#include <fstream>
 #include <ostream>
-#include <stdexcept>
-#include <system_error>
 
+#include "config/whole_file.hpp"
 #include "fmt/format.h"
 #include "fmt/ostream.h"
 
 namespace argus::eval {
+
+using config::write_whole_file;
+
 namespace {
 
 std::string_view name_of(frame_state s) {
@@ -28,22 +29,6 @@ std::string percent(double v) {
 }
 
 }  // namespace
-
-void write_whole_file(const std::filesystem::path& path,
-                      const std::function<void(std::ostream&)>& write) {
-  const std::filesystem::path partial(path.string() + ".partial");
-  {
-    std::ofstream out(partial, std::ios::binary | std::ios::trunc);
-    if (!out) throw std::runtime_error(fmt::format("cannot write {}", partial.string()));
-    write(out);
-    out.flush();
-    if (!out) throw std::runtime_error(fmt::format("cannot write {}", partial.string()));
-  }
-  std::error_code ec;
-  std::filesystem::rename(partial, path, ec);
-  if (ec)
-    throw std::runtime_error(fmt::format("cannot rename {}: {}", partial.string(), ec.message()));
-}
 
 void write_tracks(const std::filesystem::path& path, const observation_log::contents& log,
                   double tick_s) {

@@ -10,11 +10,6 @@
 
 namespace argus::eval {
 
-/// Writes `path` through `write` under a temporary name and renames it when complete, so a
-/// failed run leaves no half-written file; throws std::runtime_error naming the file.
-void write_whole_file(const std::filesystem::path& path,
-                      const std::function<void(std::ostream&)>& write);
-
 /// `tracks.csv`: one row per camera, tick and task it performs
 /// (tick,t,camera,task,role,found,x,y,w,h,score,truth,iou,observed).
 void write_tracks(const std::filesystem::path& path, const observation_log::contents& log,

@@ -2,23 +2,16 @@
 
 #include <fstream>
 #include <iterator>
-#include <stdexcept>
-#include <system_error>
+
+#include "config/whole_file.hpp"
 
 namespace argus::report {
 
 void write_file(const std::filesystem::path& file, std::span<const unsigned char> bytes) {
-  auto partial = file;
-  partial += ".partial";
-  {
-    std::ofstream out(partial, std::ios::binary | std::ios::trunc);
+  config::write_whole_file(file, [&](std::ostream& out) {
     out.write(reinterpret_cast<const char*>(bytes.data()),
               static_cast<std::streamsize>(bytes.size()));
-    if (!out) throw std::runtime_error("cannot write " + file.string());
-  }
-  std::error_code error;
-  std::filesystem::rename(partial, file, error);
-  if (error) throw std::runtime_error("cannot write " + file.string() + ": " + error.message());
+  });
 }
 
 void write_file(const std::filesystem::path& file, std::string_view text) {

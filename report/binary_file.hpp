@@ -10,9 +10,7 @@
 
 namespace argus::report {
 
-/// Writes `bytes` to `file` through a temporary beside it and a rename, so a reader (a
-/// browser, a resumed sweep) never sees half a file; throws std::runtime_error naming the file
-/// when it cannot be written.
+/// Writes `bytes` to `file` whole (config::write_whole_file).
 void write_file(const std::filesystem::path& file, std::span<const unsigned char> bytes);
 
 /// write_file for text.

@@ -1,0 +1,15 @@
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <iosfwd>
+
+namespace argus::config {
+
+/// Writes `path` through `write` under a temporary name beside it and renames it when
+/// complete, so that a reader (a browser, a resumed sweep, the next run) never sees half a
+/// file and a failed run leaves none; throws std::runtime_error naming the file.
+void write_whole_file(const std::filesystem::path& path,
+                      const std::function<void(std::ostream&)>& write);
+
+}  // namespace argus::config
