@@ -252,14 +252,21 @@ void camera_controller::on_query(int from, const protocol::query_relevance& q,
     return;
   }
   if (q.leader == me_.id) return;
-  for (auto& p : pending_) {
-    if (p.task.task != t) continue;
-    if (!p.bid_sent) {
-      p.leader = q.leader;
-      p.querier = from;
-      p.auction = q.auction;
+  auto pending = std::find_if(pending_.begin(), pending_.end(),
+                              [t](const pending_query& p) { return p.task.task == t; });
+  if (pending != pending_.end()) {
+    const bool new_auction = pending->leader != q.leader || pending->auction != q.auction;
+    if (!pending->bid_sent) {
+      pending->leader = q.leader;
+      pending->querier = from;
+      pending->auction = q.auction;
+      return;
     }
-    return;
+    // A bid already went to an earlier auction and no join came of it (not chosen, or the
+    // join was lost): the leader is auctioning again, so this node bids again rather than
+    // staying deaf to the task until its bidding timeout.
+    if (!new_auction) return;
+    pending_.erase(pending);
   }
   pending_query p;
   p.task = q.task;
@@ -327,17 +334,27 @@ void camera_controller::on_status(const protocol::status& s, controller_output& 
     return;
   }
   if (!task_ || s.task != task_->task || s.sender == me_.id) return;
-  if (auto r = retired_.find(s.sender); r != retired_.end()) {
-    if (now_ - r->second < ticks(settings_.member_failure_timeout)) return;
-    retired_.erase(r);
-  }
+  // Statuses from a leader that handed its group over or was taken for failed, or naming it
+  // as their leader, are stale: still in flight, or from nodes that have not noticed yet.
+  // Following them would put the group under a leader that is gone (and, merging by highest
+  // id, keep putting it there).
+  if (retired(s.sender) || retired(s.leader)) return;
   if (role_ == group_role::member) {
     // Members forward group messages between their leader and the cameras they recruited
     // through their own neighbourhood, which may be beyond the leader's hop limit.
+    // A node that follows this node's leader without being on the leader's list may be out of
+    // the leader's reach: one demoted on hearing this node's status, say. Relay for it too, or
+    // it takes the leader it cannot hear for failed, leads, hears this node and is demoted
+    // again, every leader failure timeout.
+    if (s.leader == leader_ && s.sender != leader_ && !s.leaving && leader_members_ &&
+        std::find(leader_members_->begin(), leader_members_->end(), s.sender) ==
+            leader_members_->end())
+      relayed_for_.insert(s.sender);
     if (s.leader == leader_ && relayed_for_.count(s.sender) != 0) send(leader_, s, out);
     if (s.sender != leader_) return;
     for (int far : relayed_for_) send(far, s, out);
     last_leader_status_ = now_;
+    leader_members_ = s.members;
     if (s.leader != s.sender) {
       follow_leader(s.leader, "leader_demoted", out);
       return;
@@ -443,6 +460,7 @@ void camera_controller::start_task(const protocol::task_description& task, group
   forget_group();
   last_bids_.clear();
   relayed_for_.clear();
+  leader_members_.reset();
   relayed_by_.clear();
   next_auction_at_ = now_;
 }
@@ -491,13 +509,23 @@ void camera_controller::follow_leader(int leader, std::string_view reason, contr
   role_ = group_role::member;
   leader_ = leader;
   last_leader_status_ = now_;
+  leader_members_.reset();
   forget_group();
   emit_leader_changed(leader, previous, reason, out);
   // At once, so that the new leader counts this node (and this node's members follow).
   send(protocol::broadcast, own_status(), out);
 }
 
+bool camera_controller::retired(int leader) {
+  auto r = retired_.find(leader);
+  if (r == retired_.end()) return false;
+  if (now_ - r->second < ticks(settings_.member_failure_timeout)) return true;
+  retired_.erase(r);
+  return false;
+}
+
 void camera_controller::met_other_leader(int other, controller_output& out) {
+  if (retired(other)) return;
   if (settings_.merge == config::merge_rule::highest_id) {
     // Section IV-C: among conflicting leaders the one with the highest id stays leader.
     if (other > me_.id) follow_leader(other, "demoted", out);
@@ -555,6 +583,7 @@ void camera_controller::run_timers(controller_output& out) {
 void camera_controller::follow(controller_output& out) {
   if (now_ - last_leader_status_ >= ticks(settings_.leader_failure_timeout)) {
     // Section IV-C: no status from the leader in time: it is taken as failed.
+    retired_[leader_] = now_;
     become_leader("leader_failed", out);
     lead(out);
     return;

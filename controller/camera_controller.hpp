@@ -126,6 +126,8 @@ class camera_controller {
   void become_leader(std::string_view reason, controller_output& out);
   void follow_leader(int leader, std::string_view reason, controller_output& out);
   void met_other_leader(int other, controller_output& out);
+  // Whether `leader` handed its group over or was taken for failed recently (its news stale).
+  bool retired(int leader);
   // Forgets the group this node led or followed: members, auction, conflict, negotiation.
   void forget_group();
   void emit_leader_changed(int leader, int previous, std::string_view reason,
@@ -180,7 +182,10 @@ class camera_controller {
   // Member: cameras it recruited through its neighbourhood (forwarded their join), whose
   // status it forwards to the leader and to which it forwards the leader's.
   std::set<int> relayed_for_;
-  // Leaders that handed their group over, and when: their late statuses are stale.
+  // Member: the members its leader's last status listed (none heard yet: nullopt).
+  std::optional<std::vector<int>> leader_members_;
+  // Leaders that handed their group over or were taken for failed, and when: their late
+  // statuses, and statuses naming them as leader, are stale.
   std::map<int, std::int64_t> retired_;
   // Which member relayed each bidder's bid (to forward the join through it).
   std::map<int, int> relayed_by_;

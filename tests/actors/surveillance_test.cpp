@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -35,15 +36,24 @@ std::vector<nlohmann::json> events_of(const run_outcome& o) {
   return events;
 }
 
-// The camera leading task 0 at `t` seconds, from the log.
+// The camera leading task 0 at `t` seconds, from the log: leaders come with task_created and
+// self-promotions, and go when demoted (leader_changed to another) or when they leave. 0 when
+// none or several lead.
 int leader_at(const std::vector<nlohmann::json>& events, double t) {
-  int leader = 0;
+  std::set<int> leaders;
   for (const auto& e : events) {
     if (e["t"].get<double>() > t) break;
-    if (e["kind"] == "task_created") leader = e["camera"];
-    if (e["kind"] == "leader_changed" && e["leader"] == e["camera"]) leader = e["camera"];
+    const auto& kind = e["kind"];
+    if (kind == "task_created") leaders.insert(e["camera"].get<int>());
+    if (kind == "leader_changed") {
+      if (e["leader"] == e["camera"])
+        leaders.insert(e["camera"].get<int>());
+      else
+        leaders.erase(e["camera"].get<int>());
+    }
+    if (kind == "left_task" && e["role"] == "leader") leaders.erase(e["camera"].get<int>());
   }
-  return leader;
+  return leaders.size() == 1 ? *leaders.begin() : 0;
 }
 
 TEST(surveillance, the_target_is_observed_by_three_cameras_in_turn) {
@@ -63,26 +73,43 @@ TEST(surveillance, the_target_is_observed_by_three_cameras_in_turn) {
     EXPECT_TRUE(std::filesystem::exists(o.output_dir / file)) << file;
 }
 
+// The leader's camera crashes 40 s into the run, in six seeds (the task on camera 7's next
+// entrant, as in penn_station.yaml). The group must go on without it: where the target was
+// being observed when it crashed, another camera observes her again within 20 s in most seeds.
+// (One seed alone says little: which camera bid on a look-alike decides it.)
 TEST(surveillance, the_task_survives_the_crash_of_its_leader) {
-  const auto first = run_scenario(station(60.0, "argus_surveil_calm"), false);
-  const int leader = leader_at(events_of(first), 40.0);
-  ASSERT_NE(leader, 0);
-  auto s = station(120.0, "argus_surveil_crash");
-  s.network.node_failure_probability = 0.0;
-  s.faults.push_back({config::seconds{40.0}, config::fault_kind::crash, leader, std::nullopt,
-                      config::seconds{0.0}, 1.0});
-  const auto o = run_scenario(s, false);
-  const auto& m = o.evaluation.tasks.at(0);
-  ASSERT_EQ(m.failure_recoveries.size(), 1u);
-  EXPECT_EQ(m.failure_recoveries[0].camera, leader);
-  ASSERT_TRUE(m.failure_recoveries[0].recovered_after_s.has_value());
-  EXPECT_LT(*m.failure_recoveries[0].recovered_after_s, 20.0);
-  // Someone else carries the task after the crash.
-  bool carried = false;
-  for (const auto& row : o.evaluation.targets)
-    carried =
-        carried || (row.sample.tick > 40 * 15 && row.observed_by >= 0 && row.observed_by != leader);
-  EXPECT_TRUE(carried);
+  int crashed = 0;
+  int recovered = 0;
+  for (std::uint64_t seed = 1; seed <= 6; ++seed) {
+    SCOPED_TRACE(seed);
+    auto calm = station(60.0, "argus_surveil_calm");
+    calm.run.seed = seed;
+    calm.network.node_failure_probability = 0.0;
+    calm.tasks.at(0).by = config::task_target::first_to_enter;
+    // Up to the crash the two runs are one: the calm run names the leader at 40 s.
+    const int leader = leader_at(events_of(run_scenario(calm, false)), 40.0);
+    if (leader == 0) continue;  // no single leader then (task not started, or merging)
+    auto s = calm;
+    s.run.duration = config::seconds{100.0};
+    s.run.output_dir = (std::filesystem::temp_directory_path() / "argus_surveil_crash").string();
+    s.faults.push_back({config::seconds{40.0}, config::fault_kind::crash, leader, std::nullopt,
+                        config::seconds{0.0}, 1.0});
+    const auto o = run_scenario(s, false);
+    const auto& m = o.evaluation.tasks.at(0);
+    ASSERT_EQ(m.failure_recoveries.size(), 1u);
+    EXPECT_EQ(m.failure_recoveries[0].camera, leader);
+    ++crashed;
+    const auto& after = m.failure_recoveries[0].recovered_after_s;
+    // Recovered: observed again within 20 s, by another camera.
+    bool carried = false;
+    for (const auto& row : o.evaluation.targets)
+      carried = carried ||
+                (row.sample.tick > 40 * 15 && row.observed_by >= 0 && row.observed_by != leader);
+    if (after && *after < 20.0 && carried) ++recovered;
+  }
+  std::printf("leader crashes: %d, recovered: %d\n", crashed, recovered);
+  ASSERT_GE(crashed, 4);
+  EXPECT_GE(2 * recovered, crashed);
 }
 
 TEST(surveillance, the_oracle_bounds_the_protocol_and_the_protocol_beats_working_alone) {

@@ -55,6 +55,25 @@ TEST(group_protocol, a_lost_bid_leaves_the_auction_to_the_others) {
   EXPECT_EQ(h.node(3).leader(), 1);
 }
 
+TEST(group_protocol, a_bidder_whose_join_was_lost_bids_again_in_the_next_auction) {
+  // The join to camera 2 is lost. Its leader drops it as silent and auctions again; camera 2,
+  // still waiting for a join (bidding timeout 10 s), must bid in the new auction rather than
+  // stay deaf to the task until its timeout.
+  auto h = three_cameras();
+  bool lost = false;
+  h.drop = [&lost](int, int to, const protocol::group_message& m) {
+    if (lost || to != 2 || !std::holds_alternative<protocol::join>(m)) return false;
+    lost = true;
+    return true;
+  };
+  h.run_until(95);  // before camera 2's bidding timeout
+  ASSERT_TRUE(lost);
+  EXPECT_EQ(h.count("bid", 2), 2u);
+  h.run_until(130);  // the second auction closes
+  EXPECT_EQ(h.count("joined", 2), 1u);
+  EXPECT_EQ(h.node(2).leader(), 1);
+}
+
 TEST(group_protocol, members_send_status_every_heartbeat) {
   auto h = three_cameras();
   h.run_until(100);
@@ -126,6 +145,54 @@ TEST(group_protocol, two_leaders_of_one_task_merge_by_negotiation) {
   EXPECT_EQ(h.leaders(7).size(), 1u);
   EXPECT_GE(h.sent("demote"), 1u);
   EXPECT_GE(h.sent("demoteack"), 1u);
+}
+
+// Cameras 1 and 3 cannot hear each other; 2 hears both. Two leaders of one task, 1 and 3:
+// 1 hears only 3's member 2, and merging by highest id makes it follow 3.
+//
+//   1 <--> 2 <--> 3      (1 and 3 out of each other's reach)
+TEST(group_protocol, a_leader_merged_through_a_member_hears_its_new_leader_through_it) {
+  auto s = test_scenario({1, 2, 3});
+  protocol_harness h(std::move(s));
+  h.sees = [](int, task_id, std::int64_t) -> std::optional<cv::Rect2d> { return centred_box(); };
+  h.drop = [](int from, int to, const protocol::group_message&) {
+    return (from == 1 && to == 3) || (from == 3 && to == 1);
+  };
+  h.operator_query_at(0, 3, test_task(1, 3));
+  h.operator_query_at(20, 1, test_task(1, 3));
+  h.run_until(600);  // a minute: twenty leader failure timeouts
+  EXPECT_EQ(h.leaders(7), std::set<int>{3});
+  EXPECT_EQ(h.node(1).leader(), 3);
+  // Demoted once, and not taking the leader it cannot hear for failed every 3 s.
+  EXPECT_LE(h.count("leader_changed", 1), 2u);
+  EXPECT_EQ(h.count("leader_changed", 3), 0u);
+}
+
+// Camera 3 (the highest id) leads 1 and 2, loses its target and hands the group to one of them.
+// A status the new leader sent as 3's member, still on its way, reaches the other after the
+// hand-over: it names 3 as leader and must not send the other back to the leader that left (by
+// highest id 3 would then win every merge, and the group would follow a leader that is gone).
+TEST(group_protocol, statuses_naming_a_leader_that_handed_over_do_not_bring_it_back) {
+  for (std::int64_t delay : {3, 5, 8, 12}) {
+    SCOPED_TRACE(delay);
+    protocol_harness h(test_scenario({1, 2, 3}), delay);
+    h.sees = [](int, task_id, std::int64_t) -> std::optional<cv::Rect2d> { return centred_box(); };
+    h.operator_query_at(0, 3, test_task(3, 3));
+    h.run_until(100);
+    ASSERT_EQ(h.node(3).members(), (std::vector<int>{1, 2}));
+    h.sees = [](int camera, task_id, std::int64_t) -> std::optional<cv::Rect2d> {
+      if (camera == 3) return std::nullopt;
+      return centred_box();
+    };
+    h.run_until(600);
+    EXPECT_EQ(h.count("handoff", 3), 1u);
+    const auto leaders = h.leaders(7);
+    ASSERT_EQ(leaders.size(), 1u);
+    const int leader = *leaders.begin();
+    EXPECT_NE(leader, 3);
+    EXPECT_EQ(h.node(3 - leader).leader(), leader);  // the other of 1 and 2
+    EXPECT_LE(h.count("leader_changed", 1) + h.count("leader_changed", 2), 3u);
+  }
 }
 
 // Camera 2 serves task 7 with leader 1 when task 8 arrives at camera 3, wanting two cameras;
