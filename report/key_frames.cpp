@@ -98,6 +98,9 @@ std::vector<key_event> key_events_of(const event_log& log) {
   std::vector<key_event> out;
   for (const auto& e : log.events)
     if (auto k = key_event_of(e)) out.push_back(std::move(*k));
+  // A run logs in time order; a log put together otherwise still reads in time order.
+  std::stable_sort(out.begin(), out.end(),
+                   [](const key_event& a, const key_event& b) { return a.tick < b.tick; });
   return out;
 }
 

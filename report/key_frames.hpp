@@ -41,7 +41,7 @@ constexpr std::int64_t world_tick_seen_at(std::int64_t tick) noexcept {
   return tick + 1;
 }
 
-/// The key events of a run's log, in log order (which is time order):
+/// The key events of a run's log, in time order (by tick; log order among equals):
 ///
 /// | event                                      | key event          | frames                   |
 /// | ------------------------------------------ | ------------------ | ------------------------ |

@@ -60,6 +60,18 @@ TEST(key_frames, picks_task_starts_handoffs_leader_changes_failures_and_recoveri
   EXPECT_FALSE(events[5].frames[0].failed);
 }
 
+TEST(key_frames, in_time_order_whatever_the_logs_order) {
+  const auto events = key_events_of(event_log::parse(
+      R"({"t":4,"tick":60,"kind":"task_created","camera":3,"task":1}
+{"t":2,"tick":30,"kind":"task_created","camera":2,"task":0}
+{"t":4,"tick":60,"kind":"handoff","task":1,"from":3,"to":4}
+)"));
+  ASSERT_EQ(events.size(), 3u);
+  EXPECT_EQ(events[0].task, 0);
+  EXPECT_EQ(events[1].kind, "task_created");
+  EXPECT_EQ(events[2].kind, "handoff");
+}
+
 TEST(key_frames, events_without_tick_or_camera_are_skipped) {
   const auto events = key_events_of(event_log::parse(
       R"({"t":1,"kind":"task_created","camera":7,"task":0}
