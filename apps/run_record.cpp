@@ -34,7 +34,12 @@ std::optional<std::filesystem::path> record_run(const config::scenario& scenario
     if (!feeds) std::filesystem::remove_all(output_dir / "feeds");
     report::report_options options;
     options.feeds = feeds;
-    report::build_reports(output_dir, &copy, options);
+    const auto outcome = report::build_reports(output_dir, &copy, options);
+    // The key frames a user would look for and does not find are said; a run with no key event
+    // simply has none.
+    for (const auto& note : outcome.left_out)
+      if (note.starts_with("feeds/") && !note.starts_with("feeds/ (no key event"))
+        std::cerr << "argus run: left out " << note << '\n';
     return output_dir / "report.html";
   } catch (const std::exception& e) {
     std::cerr << "argus run: reports not written: " << e.what() << '\n';

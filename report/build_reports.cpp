@@ -91,7 +91,9 @@ class report_builder {
   }
 
   void feeds(const std::optional<event_log>& events) {
-    if (scenario_ == nullptr) return;
+    // Whatever is drawn now, an earlier drawing's frames are not this one's.
+    std::filesystem::remove_all(dir_ / "feeds");
+    if (scenario_ == nullptr) return;  // said by load_scenario
     if (!events) {
       outcome_.left_out.push_back("feeds/ (no events.jsonl)");
       return;

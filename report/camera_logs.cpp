@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <fstream>
 #include <functional>
 #include <optional>
@@ -67,7 +68,8 @@ class strict_csv {
 
   std::int64_t integer(std::size_t k) const {
     const double value = number(k);
-    if (value != static_cast<double>(static_cast<std::int64_t>(value)))
+    // Within the doubles that hold whole numbers exactly, so that the cast is defined.
+    if (!(std::abs(value) < 9.0e15) || value != std::trunc(value))
       throw camera_log_error(fmt::format("{}:{}: column {}: expected a whole number, got '{}'",
                                          name_, line_, header_[columns_[k]], fields_[columns_[k]]));
     return static_cast<std::int64_t>(value);

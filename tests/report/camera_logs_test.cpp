@@ -78,6 +78,10 @@ TEST(camera_logs, a_bad_file_is_named_with_its_line) {
                      "2.5,0.1,7,0,leader,1,3,67,11,31,0.5,84,0.5,1\n",
                      false),
             "run/tracks.csv:2: column tick: expected a whole number, got '2.5'");
+  EXPECT_EQ(error_of("tick,t,camera,task,role,found,x,y,w,h,score,truth,iou,observed\n"
+                     "1e300,0.1,7,0,leader,1,3,67,11,31,0.5,84,0.5,1\n",
+                     false),
+            "run/tracks.csv:2: column tick: expected a whole number, got '1e300'");
 }
 
 TEST(camera_logs, a_missing_file_is_named) {

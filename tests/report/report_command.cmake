@@ -48,6 +48,19 @@ foreach(part "fixture, seed 3, strategy protocol" "data:image/png;base64," "cove
   endif()
 endforeach()
 
+# No EGL renderer: the feeds are left out, saying why; the rest is drawn.
+file(COPY ${DATA}/ DESTINATION ${OUT}/no_egl)
+execute_process(COMMAND ${CMAKE_COMMAND} -E env ARGUS_EGL_PLATFORM=no_such_platform
+                        ${ARGUS} report ${OUT}/no_egl
+                RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT code EQUAL 0 OR NOT out MATCHES "left out: feeds/ \\(cannot render: EGL")
+  message(FATAL_ERROR "argus report without EGL: exit ${code}\n${out}\n${err}")
+endif()
+expect_files(${OUT}/no_egl plan.png timeline.png report.html)
+if(EXISTS ${OUT}/no_egl/feeds)
+  message(FATAL_ERROR "feeds/ written without a renderer")
+endif()
+
 # An older run: events and summary only. No plan without a scenario; the rest is drawn.
 file(MAKE_DIRECTORY ${OUT}/events_only)
 file(COPY ${DATA}/events.jsonl ${DATA}/summary.json DESTINATION ${OUT}/events_only)
