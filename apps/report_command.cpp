@@ -1,4 +1,4 @@
-// `argus report DIR`: (re)builds a run's pictures and page from its output folder.
+// `argus report DIR`: (re)builds a run's pictures, key frames and page from its output folder.
 
 #include <filesystem>
 #include <iostream>
@@ -15,6 +15,7 @@ namespace {
 struct report_arguments {
   std::string dir;
   std::string scenario;
+  bool no_feeds = false;
 };
 
 int report(const report_arguments& args) {
@@ -33,7 +34,9 @@ int report(const report_arguments& args) {
     }
   }
   try {
-    const auto outcome = report::build_reports(args.dir, scenario ? &*scenario : nullptr);
+    report::report_options options;
+    options.feeds = !args.no_feeds;
+    const auto outcome = report::build_reports(args.dir, scenario ? &*scenario : nullptr, options);
     for (const auto& file : outcome.written) std::cout << "  wrote " << file.string() << '\n';
     for (const auto& note : outcome.left_out) std::cout << "  left out: " << note << '\n';
   } catch (const std::exception& e) {
@@ -47,12 +50,15 @@ int report(const report_arguments& args) {
 
 void add_report_command(CLI::App& app, int& result) {
   auto* cmd = app.add_subcommand(
-      "report", "Draw a run's plan.png, timeline.png and report.html from its output folder");
+      "report",
+      "Draw a run's plan.png, timeline.png, feeds/ and report.html from its output folder");
   auto args = std::make_shared<report_arguments>();
   cmd->add_option("DIR", args->dir, "The run's output folder")->required();
   cmd->add_option(
       "--scenario", args->scenario,
       "Scenario file for the plan (default: DIR/scenario.yaml, which argus run writes)");
+  cmd->add_flag("--no-feeds", args->no_feeds,
+                "Leave DIR/feeds/ as it is: draw no frames at the key events (they render)");
   cmd->callback([args, &result] { result = report(*args); });
 }
 

@@ -1,6 +1,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <optional>
 #include <tuple>
@@ -35,6 +36,7 @@ struct run_arguments {
   bool video = false;
   std::string video_size = "320x240";
   bool mot = false;
+  bool no_feeds = false;
   std::vector<std::string> tasks;
 };
 
@@ -88,6 +90,8 @@ void print_outcome(const run_arguments& args, const config::scenario& s,
     j["metrics"] = (outcome.output_dir / "metrics.json").string();
     if (args.video) j["video"] = (outcome.output_dir / "video" / "feeds.avi").string();
     if (report) j["report"] = report->string();
+    if (report && std::filesystem::exists(outcome.output_dir / "feeds" / "contact_sheet.png"))
+      j["feeds"] = (outcome.output_dir / "feeds").string();
     std::cout << j.dump() << '\n';
     return;
   }
@@ -102,6 +106,8 @@ void print_outcome(const run_arguments& args, const config::scenario& s,
   eval::print_metrics_table(std::cout, outcome.evaluation);
   if (args.video)
     std::cout << "  video:   " << (outcome.output_dir / "video" / "feeds.avi").string() << '\n';
+  if (report && std::filesystem::exists(outcome.output_dir / "feeds" / "contact_sheet.png"))
+    std::cout << "  feeds:   " << (outcome.output_dir / "feeds").string() << '\n';
   if (report) std::cout << "  report:  " << report->string() << '\n';
   if (!r.unexpected_down.empty())
     std::cout << "  participants that died unexpectedly: " << r.unexpected_down.size() << '\n';
@@ -130,6 +136,9 @@ void add_run_command(CLI::App& app, int& result) {
                   "Size of one camera's tile in the video, WxH (default 320x240)");
   cmd->add_flag("--mot", args->mot,
                 "Also write ground truth and track boxes in MOTChallenge format to DIR/mot");
+  cmd->add_flag("--no-feeds", args->no_feeds,
+                "Leave out DIR/feeds/ (the cameras' frames at the key events, rendered again after "
+                "the run) and its contact sheet in report.html");
   cmd->add_option("--task", args->tasks,
                   "Add an operator task, e.g. 'at=10s,camera=7,pixel=160x120' (repeatable; keys "
                   "as in a scenario's tasks)");
@@ -150,7 +159,7 @@ void add_run_command(CLI::App& app, int& result) {
     try {
       options.show_progress = !args->no_progress && isatty(STDERR_FILENO) != 0;
       auto outcome = actors::run_scenario(scenario, options);
-      const auto report = record_run(scenario, outcome.output_dir);
+      const auto report = record_run(scenario, outcome.output_dir, !args->no_feeds);
       print_outcome(*args, scenario, outcome, report);
       result = ok;
     } catch (const std::exception& e) {

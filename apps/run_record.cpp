@@ -26,11 +26,20 @@ config::scenario with_absolute_paths(config::scenario s) {
 }  // namespace
 
 std::optional<std::filesystem::path> record_run(const config::scenario& scenario,
-                                                const std::filesystem::path& output_dir) {
+                                                const std::filesystem::path& output_dir,
+                                                bool feeds) {
   try {
     const auto copy = with_absolute_paths(scenario);
     report::write_file(output_dir / "scenario.yaml", config::to_yaml(copy));
-    report::build_reports(output_dir, &copy);
+    if (!feeds) std::filesystem::remove_all(output_dir / "feeds");
+    report::report_options options;
+    options.feeds = feeds;
+    const auto outcome = report::build_reports(output_dir, &copy, options);
+    // The key frames a user would look for and does not find are said; a run with no key event
+    // simply has none.
+    for (const auto& note : outcome.left_out)
+      if (note.starts_with("feeds/") && !note.starts_with("feeds/ (no key event"))
+        std::cerr << "argus run: left out " << note << '\n';
     return output_dir / "report.html";
   } catch (const std::exception& e) {
     std::cerr << "argus run: reports not written: " << e.what() << '\n';

@@ -10,9 +10,13 @@ namespace argus::apps {
 /// What a run leaves in its output folder besides the simulation's own files: the effective
 /// scenario (`scenario.yaml`, --set overrides applied, file paths made absolute so the copy
 /// loads from anywhere: `argus report` draws the plan from it) and the reports
-/// (report/build_reports.hpp). Returns report.html's path, or nothing when the reports could not
-/// be written (said on stderr: a run that finished is not failed by its pictures).
+/// (report/build_reports.hpp), with `feeds/` unless `feeds` is false (`--no-feeds`: then a
+/// `feeds/` folder an earlier run left in the folder is removed, as it is not this run's; when
+/// the feeds are left out for a reason other than having no key event, stderr says why).
+/// Returns report.html's path, or nothing when the reports could not be written (said on
+/// stderr: a run that finished is not failed by its pictures).
 std::optional<std::filesystem::path> record_run(const config::scenario& scenario,
-                                                const std::filesystem::path& output_dir);
+                                                const std::filesystem::path& output_dir,
+                                                bool feeds = true);
 
 }  // namespace argus::apps

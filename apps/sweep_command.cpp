@@ -33,6 +33,7 @@ struct sweep_arguments {
   std::optional<std::string> out;
   std::optional<std::string> duration;
   std::string program;
+  bool feeds = false;
 };
 
 // Children the signal handler stops; slots hold 0 when free. A handler may only call
@@ -90,6 +91,8 @@ std::vector<std::string> run_arguments(const sweep_arguments& args,
     out.push_back("--duration");
     out.push_back(*args.duration);
   }
+  // A sweep measures; the key frames of every run would cost it rendering nobody looks at.
+  if (!args.feeds) out.push_back("--no-feeds");
   return out;
 }
 
@@ -276,6 +279,8 @@ void add_sweep_command(CLI::App& app, int& result) {
       ->check(integer_in(0, 256));
   cmd->add_option("--out", args->out, "Sweep folder (default out/sweep_<scenario name>)");
   cmd->add_option("--duration", args->duration, "Virtual duration of each run, e.g. '2 min'");
+  cmd->add_flag("--feeds", args->feeds,
+                "Let each run draw its feeds/ (key frames; runs get --no-feeds by default)");
   cmd->add_option("--argus", args->program,
                   "The argus executable the runs use (default: this one)");
   cmd->callback([args, &result] { result = run_sweep(*args); });

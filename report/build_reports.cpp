@@ -10,6 +10,7 @@
 #include "report/event_log.hpp"
 #include "report/group_timeline.hpp"
 #include "report/html_report.hpp"
+#include "report/key_frame_feeds.hpp"
 #include "report/plan_report.hpp"
 #include "report/target_paths.hpp"
 #include "report/timeline_report.hpp"
@@ -48,36 +49,59 @@ class report_builder {
  public:
   explicit report_builder(std::filesystem::path dir) : dir_(std::move(dir)) {}
 
-  void plan(const config::scenario* given) {
-    std::optional<config::scenario> loaded;
+  // The run's scenario and station, for the plan and the feeds; what is missing is said once
+  // for each of them.
+  void load_scenario(const config::scenario* given, bool feeds) {
+    const auto leave_out = [&](const std::string& why) {
+      outcome_.left_out.push_back(fmt::format("plan.png ({})", why));
+      if (feeds) outcome_.left_out.push_back(fmt::format("feeds/ ({})", why));
+    };
     if (given == nullptr) {
       const auto file = dir_ / "scenario.yaml";
       if (!std::filesystem::exists(file)) {
-        outcome_.left_out.push_back("plan.png (no scenario.yaml in the folder; give --scenario)");
+        leave_out("no scenario.yaml in the folder; give --scenario");
         return;
       }
       try {
-        loaded = config::load_scenario(file);
+        loaded_ = config::load_scenario(file);
       } catch (const config::scenario_error& e) {
-        outcome_.left_out.push_back(fmt::format("plan.png ({})", e.what()));
+        leave_out(e.what());
         return;
       }
-      given = &*loaded;
+      given = &*loaded_;
     }
-    std::shared_ptr<const world::station> station;
     try {
-      station = world::station::load(world::layout_path(*given));
+      station_ = world::station::load(world::layout_path(*given));
     } catch (const std::exception& e) {
-      outcome_.left_out.push_back(fmt::format("plan.png (station layout: {})", e.what()));
+      leave_out(fmt::format("station layout: {}", e.what()));
       return;
     }
+    scenario_ = given;
+  }
+
+  void plan() {
+    if (scenario_ == nullptr) return;
     target_paths paths;
     if (auto targets = csv_table::read(dir_ / "targets.csv"))
       paths = target_paths_from(*targets);
     else
       outcome_.left_out.push_back("target paths on plan.png (no targets.csv)");
     add_image("plan.png", "the targets' paths, coloured by the camera observing them",
-              render_plan_report(*station, given->cameras, paths));
+              render_plan_report(*station_, scenario_->cameras, paths));
+  }
+
+  void feeds(const std::optional<event_log>& events) {
+    // Whatever is drawn now, an earlier drawing's frames are not this one's.
+    std::filesystem::remove_all(dir_ / "feeds");
+    if (scenario_ == nullptr) return;  // said by load_scenario
+    if (!events) {
+      outcome_.left_out.push_back("feeds/ (no events.jsonl)");
+      return;
+    }
+    auto drawn = write_feeds(dir_, *scenario_, station_, *events);
+    for (auto& file : drawn.written) outcome_.written.push_back(std::move(file));
+    for (auto& note : drawn.left_out) outcome_.left_out.push_back(std::move(note));
+    if (drawn.sheet) images_.push_back(std::move(*drawn.sheet));
   }
 
   void timeline(const std::optional<event_log>& events, double length_s) {
@@ -103,25 +127,31 @@ class report_builder {
     const auto file = dir_ / name;
     write_file(file, png);
     outcome_.written.push_back(file);
-    images_.push_back({std::move(name), std::move(caption), std::move(png)});
+    images_.push_back({std::move(name), std::move(caption), std::move(png), {}});
   }
 
   std::filesystem::path dir_;
+  std::optional<config::scenario> loaded_;
+  const config::scenario* scenario_ = nullptr;
+  std::shared_ptr<const world::station> station_;
   std::vector<report_image> images_;
   report_outcome outcome_;
 };
 
 }  // namespace
 
-report_outcome build_reports(const std::filesystem::path& dir, const config::scenario* scenario) {
+report_outcome build_reports(const std::filesystem::path& dir, const config::scenario* scenario,
+                             const report_options& options) {
   if (!std::filesystem::is_directory(dir))
     throw std::runtime_error(fmt::format("{}: not a folder", dir.string()));
   const auto metrics = read_json(dir / "metrics.json");
   const auto summary = read_json(dir / "summary.json");
   const auto events = event_log::read(dir / "events.jsonl");
   report_builder builder(dir);
-  builder.plan(scenario);
+  builder.load_scenario(scenario, options.feeds);
+  builder.plan();
   builder.timeline(events, run_length_s(metrics, summary));
+  if (options.feeds) builder.feeds(events);
   html_report_input input;
   input.title = title_of(dir, metrics, summary);
   input.metrics = metrics;

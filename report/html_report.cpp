@@ -83,12 +83,20 @@ std::string key_value_table(const nlohmann::json& object) {
 
 std::string images_section(const std::vector<report_image>& images) {
   std::string html;
-  for (const auto& image : images)
+  for (const auto& image : images) {
     html += fmt::format(
         "<figure><img src=\"data:image/png;base64,{}\" alt=\"{}\"><figcaption>{}: {}"
-        "</figcaption></figure>\n",
+        "</figcaption>",
         base64(image.png), html_escape(image.caption), html_escape(image.file),
         html_escape(image.caption));
+    if (!image.details.empty()) {
+      html += fmt::format("<details><summary>{} {}</summary><ol>", image.details.size(),
+                          image.details.size() == 1 ? "frame" : "frames");
+      for (const auto& line : image.details) html += "<li>" + html_escape(line) + "</li>";
+      html += "</ol></details>";
+    }
+    html += "</figure>\n";
+  }
   return html;
 }
 

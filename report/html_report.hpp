@@ -14,6 +14,8 @@ struct report_image {
   std::string file;
   std::string caption;
   std::vector<unsigned char> png;
+  /// Lines listed under the picture, folded (a contact sheet's frame captions); none: no list.
+  std::vector<std::string> details;
 };
 
 /// What report.html shows; every part is optional and left out when absent.

@@ -1,8 +1,9 @@
 #!/bin/sh
 # Stands in for `argus run` in the sweep tests: takes the same arguments, logs that it started,
-# takes FAKE_RUN_SECONDS (default 0.3; 60 for seed FAKE_SLOW_SEED, a run the test interrupts) and
-# writes a metrics.json whose summary depends on the seed and on the --set values, through a
-# rename, as a run that is not interrupted does.
+# writes them to DIR/arguments, takes FAKE_RUN_SECONDS (default 0.3; 60 for seed FAKE_SLOW_SEED,
+# a run the test interrupts) and writes a metrics.json whose summary depends on the seed and on
+# the --set values, through a rename, as a run that is not interrupted does.
+all="$*"
 out="" seed=0 sets=""
 while [ $# -gt 0 ]; do
   case "$1" in
@@ -14,6 +15,7 @@ while [ $# -gt 0 ]; do
 done
 [ -n "$out" ] || { echo "fake_run: no --out" >&2; exit 2; }
 mkdir -p "$out"
+echo "$all" > "$out/arguments"
 echo "start $(basename "$out")" >> "$out/../../invocations.log"
 # exec: the sweep's SIGTERM then stops the sleep itself, leaving nothing behind.
 [ "$seed" = "${FAKE_SLOW_SEED:-none}" ] && exec sleep 60

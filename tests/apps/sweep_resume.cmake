@@ -53,6 +53,12 @@ if(NOT count_all EQUAL 12)
   message(FATAL_ERROR "${count_all} of 12 runs done after resuming")
 endif()
 
+# Runs draw no key frames unless the sweep is asked for them (--feeds).
+file(READ ${OUT}/runs/loss_probability=0__solver=best_solv__seed=1/arguments run_arguments)
+if(NOT run_arguments MATCHES " --no-feeds")
+  message(FATAL_ERROR "the sweep started a run without --no-feeds: ${run_arguments}")
+endif()
+
 file(STRINGS ${OUT}/sweep.csv rows)
 list(LENGTH rows row_count)
 list(GET rows 0 header)

@@ -24,6 +24,21 @@ endfunction()
 file(COPY ${DATA}/ DESTINATION ${OUT}/full)
 expect_report(${OUT}/full "wrote .*plan\\.png.*timeline\\.png.*report\\.html")
 expect_files(${OUT}/full plan.png timeline.png report.html)
+# feeds/: the fixture's key events (two task starts, two hand-offs, three leader changes, two
+# crashes, a recovery: 12 frames), unless no EGL renderer could draw them, which it must say.
+file(GLOB frames ${OUT}/full/feeds/t*.png)
+list(LENGTH frames frame_count)
+if(EXISTS ${OUT}/full/feeds/contact_sheet.png)
+  if(NOT frame_count EQUAL 12)
+    message(FATAL_ERROR "feeds/ holds ${frame_count} frames, expected 12")
+  endif()
+  foreach(name t0010.00_task_created_cam7.png t0030.00_handoff_cam7.png t0030.00_handoff_cam6.png
+               t0040.00_camera_failed_cam6.png t0047.00_camera_recovered_cam10.png)
+    expect_files(${OUT}/full/feeds ${name})
+  endforeach()
+else()
+  expect_report(${OUT}/full "left out: feeds/ \\(cannot render")
+endif()
 file(READ ${OUT}/full/report.html html)
 foreach(part "fixture, seed 3, strategy protocol" "data:image/png;base64," "coverage_iou50"
              "events-data")
@@ -32,6 +47,19 @@ foreach(part "fixture, seed 3, strategy protocol" "data:image/png;base64," "cove
     message(FATAL_ERROR "report.html lacks '${part}'")
   endif()
 endforeach()
+
+# No EGL renderer: the feeds are left out, saying why; the rest is drawn.
+file(COPY ${DATA}/ DESTINATION ${OUT}/no_egl)
+execute_process(COMMAND ${CMAKE_COMMAND} -E env ARGUS_EGL_PLATFORM=no_such_platform
+                        ${ARGUS} report ${OUT}/no_egl
+                RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT code EQUAL 0 OR NOT out MATCHES "left out: feeds/ \\(cannot render: EGL")
+  message(FATAL_ERROR "argus report without EGL: exit ${code}\n${out}\n${err}")
+endif()
+expect_files(${OUT}/no_egl plan.png timeline.png report.html)
+if(EXISTS ${OUT}/no_egl/feeds)
+  message(FATAL_ERROR "feeds/ written without a renderer")
+endif()
 
 # An older run: events and summary only. No plan without a scenario; the rest is drawn.
 file(MAKE_DIRECTORY ${OUT}/events_only)

@@ -1,0 +1,148 @@
+#include "report/feed_frames.hpp"
+
+#include <algorithm>
+#include <map>
+#include <opencv2/imgproc.hpp>
+
+#include "config/derive_seed.hpp"
+#include "fmt/format.h"
+#include "vision/feed_mosaic.hpp"
+#include "vision/imaging_model.hpp"
+#include "vision/ptz_camera.hpp"
+#include "vision/renderer.hpp"
+#include "world/crowd.hpp"
+
+namespace argus::report {
+
+namespace {
+
+// Tags the noise seeds of the feeds apart from every actor's ("feed").
+constexpr std::uint64_t feeds_seed_tag = 0x66656564;
+
+const config::camera_settings* camera_of(const config::scenario& scenario, int id) {
+  for (const auto& c : scenario.cameras)
+    if (c.id == id) return &c;
+  return nullptr;
+}
+
+void draw_label(cv::Mat& image, const std::string& text, cv::Point at, const cv::Scalar& colour) {
+  const double scale = std::max(0.4, image.cols / 640.0);
+  int baseline = 0;
+  const auto size = cv::getTextSize(text, cv::FONT_HERSHEY_SIMPLEX, scale, 1, &baseline);
+  at.x = std::clamp(at.x, 0, std::max(0, image.cols - size.width - 4));
+  at.y = std::clamp(at.y, size.height + 4, std::max(size.height + 4, image.rows - baseline));
+  cv::rectangle(image, {at.x, at.y - size.height - 3}, {at.x + size.width + 4, at.y + baseline},
+                {20, 20, 20}, cv::FILLED);
+  cv::putText(image, text, {at.x + 2, at.y - 1}, cv::FONT_HERSHEY_SIMPLEX, scale, colour, 1,
+              cv::LINE_AA);
+}
+
+void draw_boxes(cv::Mat& image, const std::vector<track_box>& boxes) {
+  int lost_row = 0;
+  for (const auto& box : boxes) {
+    const auto colour = box.observed ? observed_box_colour : unobserved_box_colour;
+    if (!box.found) {
+      draw_label(image, fmt::format("task {} lost", box.task),
+                 {4, image.rows - 6 - 22 * lost_row++}, unobserved_box_colour);
+      continue;
+    }
+    const cv::Rect rect(cv::Point(static_cast<int>(box.x), static_cast<int>(box.y)),
+                        cv::Size(std::max(1, static_cast<int>(box.width)),
+                                 std::max(1, static_cast<int>(box.height))));
+    // No anti-aliasing: the box keeps its pure colour.
+    cv::rectangle(image, rect, colour, 2, cv::LINE_8);
+    draw_label(image, fmt::format("task {}", box.task), {rect.x, rect.y - 3}, colour);
+  }
+}
+
+void mark_failed(cv::Mat& image) {
+  cv::Mat grey;
+  cv::cvtColor(image, grey, cv::COLOR_BGR2GRAY);
+  grey.convertTo(grey, -1, 0.6, 30.0);  // paler: a frame of the past
+  cv::cvtColor(grey, image, cv::COLOR_GRAY2BGR);
+  const cv::Scalar red(40, 40, 230);
+  cv::line(image, {0, 0}, {image.cols - 1, image.rows - 1}, red, 2, cv::LINE_AA);
+  cv::line(image, {image.cols - 1, 0}, {0, image.rows - 1}, red, 2, cv::LINE_AA);
+  draw_label(image, "FAILED", {image.cols / 2 - 30, image.rows / 2}, red);
+}
+
+cv::Mat missing_camera(int id) {
+  cv::Mat image(240, 320, CV_8UC3, cv::Scalar(40, 40, 40));
+  draw_label(image, fmt::format("no camera {} in the scenario", id), {8, 120}, {255, 255, 255});
+  return image;
+}
+
+// Where each frame of each event goes.
+struct frame_slot {
+  std::size_t event = 0;
+  std::size_t frame = 0;
+};
+
+}  // namespace
+
+void settle_on_first_report(std::vector<key_event>& events, const track_history& tracks,
+                            std::int64_t window_ticks) {
+  for (auto& e : events) {
+    if (e.task < 0) continue;
+    for (auto& f : e.frames) {
+      if (f.failed) continue;
+      const auto first = tracks.first_report(
+          f.camera, e.task, f.world_tick, f.world_tick + std::max<std::int64_t>(window_ticks, 0));
+      if (first >= 0) f.world_tick = first;
+    }
+  }
+}
+
+std::vector<std::vector<cv::Mat>> render_key_frames(
+    const config::scenario& scenario, const std::shared_ptr<const world::station>& station,
+    const std::vector<key_event>& events, const pose_history& poses, const track_history& tracks) {
+  std::vector<std::vector<cv::Mat>> out(events.size());
+  std::map<std::int64_t, std::vector<frame_slot>> by_tick;
+  for (std::size_t e = 0; e < events.size(); ++e) {
+    out[e].resize(events[e].frames.size());
+    for (std::size_t f = 0; f < events[e].frames.size(); ++f)
+      by_tick[std::max<std::int64_t>(events[e].frames[f].world_tick, 0)].push_back({e, f});
+  }
+  if (by_tick.empty()) return out;
+
+  vision::renderer renderer(station);
+  const double tick_s = scenario.run.tick.count();
+  // One pass over time: the crowd is stepped once, whatever the number of frames.
+  world::crowd crowd(station, world::crowd_settings::from(scenario));
+  std::int64_t now = 0;
+  for (const auto& [tick, slots] : by_tick) {
+    for (; now < tick; ++now) crowd.step();
+    const auto& snapshot = *crowd.current();
+    const double time_s = snapshot.time().count();
+    for (const auto& slot : slots) {
+      const auto& frame = events[slot.event].frames[slot.frame];
+      const auto* camera = camera_of(scenario, frame.camera);
+      if (camera == nullptr) {
+        out[slot.event][slot.frame] = missing_camera(frame.camera);
+        continue;
+      }
+      vision::ptz_state pose = vision::ptz_camera::from(*camera).state();
+      if (const auto* logged = poses.at(frame.camera, tick))
+        pose = {logged->pan_deg, logged->tilt_deg, logged->field_of_view_deg};
+      const vision::camera_view view{vision::camera_placement::from(*camera), pose,
+                                     static_cast<int>(camera->imaging.width_px),
+                                     static_cast<int>(camera->imaging.height_px)};
+      auto model = vision::imaging_model::for_camera(
+          camera->imaging,
+          config::derive_seed(config::derive_seed(scenario.run.seed, feeds_seed_tag),
+                              static_cast<std::uint64_t>(tick)),
+          camera->id);
+      cv::Mat image = renderer.render(view, snapshot, time_s);
+      image = model.interlaced()
+                  ? model.apply(image, renderer.render(view, snapshot, time_s + tick_s / 2.0))
+                  : model.apply(image);
+      if (frame.failed) mark_failed(image);
+      draw_boxes(image, tracks.at(frame.camera, tick));
+      vision::label_feed(image, frame.camera);
+      out[slot.event][slot.frame] = std::move(image);
+    }
+  }
+  return out;
+}
+
+}  // namespace argus::report
