@@ -93,6 +93,8 @@ class layout_parser {
       }
     }
     size_ = out.size_m;
+    // Portals before the rest (regions look at them), but after size_m, which bounds them.
+    if (auto node = document.find("portals")) read_portals(*node, out.portals);
     if (auto node = document.find("walls")) read_walls(*node, out.walls);
     if (auto node = document.find("obstacles")) read_obstacles(*node, out.obstacles);
     if (auto node = document.find("regions")) read_regions(*node, out);
@@ -400,8 +402,6 @@ layout parse_layout(std::string_view yaml_text, const std::string& source_name) 
   yaml_reader reader(source_name);
   layout_parser parser(reader);
   const YAML::Node root = documents.empty() ? YAML::Node{} : documents.front();
-  // Portals first: the document-level checks look at them.
-  if (root.IsMap() && root["portals"]) parser.read_portals(root["portals"], out.portals);
   parser.parse(root, out);
   if (!reader.problems().empty()) throw scenario_error(reader.take_problems());
   return out;

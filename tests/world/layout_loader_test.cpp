@@ -54,6 +54,26 @@ TEST(layout_loader, minimal_layout_loads) {
   EXPECT_EQ(plan.portals[0].kind, portal_kind::street);
 }
 
+TEST(layout_loader, portals_are_bounded_by_the_plans_own_size) {
+  // Larger than the default 200 x 100: a portal near the far corner is inside the plan.
+  const auto plan = parse_layout(R"(
+size_m: [400, 300]
+regions: [{name: hall, kind: waiting_room, min: [0, 0], max: [400, 300]}]
+portals: [{name: door, kind: street, min: [390, 280], max: [400, 290]}]
+)",
+                                 "big.yaml");
+  ASSERT_EQ(plan.portals.size(), 1u);
+  EXPECT_EQ(plan.portals[0].area.max.y(), 290.0);
+  // And one outside a smaller plan is refused.
+  const auto problems = problems_of(R"(
+size_m: [20, 10]
+regions: [{name: hall, kind: waiting_room, min: [0, 0], max: [20, 10]}]
+portals: [{name: door, kind: street, min: [0, 40], max: [1, 60]}]
+)");
+  ASSERT_FALSE(problems.empty());
+  EXPECT_NE(problems[0].message.find("the plan's height"), std::string::npos);
+}
+
 TEST(layout_loader, unknown_key_names_line_and_field) {
   const auto problems = problems_of(std::string{minimal} + "benchs: []\n");
   ASSERT_EQ(problems.size(), 1u);
