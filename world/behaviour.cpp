@@ -465,7 +465,10 @@ class stepper {
         const auto& c = where_.counter(static_cast<std::size_t>(self_.target_index));
         // Join the line on coming within 10 m of it on foot (not through an obstacle); from
         // then on the snapshot ranks the line.
-        if (where_.distance_to(self_.field, s_.position) < 10.0) {
+        // A cheap test first: the field's distance is never shorter than the straight one by
+        // more than a grid cell's diagonal (0.71 m), so this excludes no one it would admit.
+        if ((s_.position - c.service_point).norm() < 11.0 &&
+            where_.distance_to(self_.field, s_.position) < 10.0) {
           if (previous_.queue_length(self_.target_index) >= c.max_queue_length) {
             abandon_goal();
             return true;
@@ -587,7 +590,8 @@ class stepper {
       desired = where_.direction_to(self_.field, s_.position) * v0;
     }
     const double desired_speed = desired.norm();
-    const vec2 desired_direction = desired_speed > 1e-9 ? vec2(desired / desired_speed) : vec2(vec2::Zero());
+    const vec2 desired_direction =
+        desired_speed > 1e-9 ? vec2(desired / desired_speed) : vec2(vec2::Zero());
     const vec2 heading =
         s_.velocity.norm() > 0.05 ? vec2(s_.velocity.normalized()) : desired_direction;
     std::array<half_plane, 48> planes;
@@ -604,8 +608,11 @@ class stepper {
     previous_.for_each_near(s_.position, [&](const pedestrian_state& other) {
       if (other.id == s_.id) return;
       const vec2 offset = other.position - s_.position;
-      const double distance = offset.norm();
-      if (distance > snapshot::neighbour_cell_m || distance < 1e-9) return;
+      // Most of the 3 x 3 cells' people are out of reach: reject them before the sqrt.
+      const double distance_squared = offset.squaredNorm();
+      constexpr double reach_squared = snapshot::neighbour_cell_m * snapshot::neighbour_cell_m;
+      if (distance_squared > reach_squared || distance_squared < 1e-18) return;
+      const double distance = std::sqrt(distance_squared);
       const vec2 n = offset / distance;
       const double gap = distance - radius - other.radius_m();
       // People in the same line stand close on purpose; only the constraint keeps them apart.
@@ -616,6 +623,8 @@ class stepper {
             settings_.anisotropy + (1.0 - settings_.anisotropy) * (1.0 + cos_phi) / 2.0;
         repulsion -=
             n * (settings_.social_strength * weight * std::exp(-gap / settings_.social_range_m));
+      }
+      if (!same_line) {
         // Headway: the free path along the way ahead before touching someone in it.
         const double along = offset.dot(desired_direction);
         const double contact = radius + other.radius_m();

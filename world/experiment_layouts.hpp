@@ -9,7 +9,7 @@ namespace argus::world {
 ///
 ///   y=11 +----------+
 ///        |          +--+
-///        |   room   exit  (width w, 1 m long, centred at y = 6)
+///        |   room   exit  (width w, 1 m long, centred at y = 6; 6.25 under 0.9 m)
 ///        |          +--+
 ///   y=1  +----------+
 ///       x=1        11  12
