@@ -168,6 +168,11 @@ resolved_task resolve(camera_node_state& st, const due_task& q, const world::sna
   switch (q.request.by) {
     case config::task_target::pedestrian:
       out.pedestrian = q.request.pedestrian;
+      // An id the crowd has not produced (yet) or that already left: say so, not "not in view".
+      if (snap->find(out.pedestrian) == nullptr) {
+        out.refusal = "no_such_pedestrian";
+        return out;
+      }
       break;
     case config::task_target::pixel:
       out.pedestrian = sensing::pedestrian_at(

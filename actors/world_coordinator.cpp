@@ -181,7 +181,7 @@ world_actors spawn_world(caf::actor_system& system, world_run_settings settings)
   // The same checks and initial crowd as world::crowd's constructor.
   if (cs.behaviour.tick_s <= 0.0 || cs.behaviour.tick_s > 0.25)
     throw std::invalid_argument("world: tick must be in (0, 0.25] s");
-  world::spawner spawner({cs.run_seed, cs.population, cs.spawn_rate_per_min, cs.behaviour.tick_s});
+  world::spawner spawner(cs.spawning(*settings.station));
   auto bounds = world::vertical_strips(*settings.station, cs.partitions);
   std::vector<world::event> events;
   std::vector<world::pedestrian> initial;

@@ -13,6 +13,10 @@ void add_run_command(CLI::App& app, int& result);
 /// Adds `argus plan` to `app`; its callback sets `result` to the command's exit code.
 void add_plan_command(CLI::App& app, int& result);
 
+/// Adds `argus crowd` (steps a scenario's crowd alone, no cameras: trajectories,
+/// measurement areas, evacuation summary) to `app`; sets `result` to its exit code.
+void add_crowd_command(CLI::App& app, int& result);
+
 /// Adds `argus render` (one camera's frame) to `app`; sets `result` to its exit code.
 void add_render_command(CLI::App& app, int& result);
 

@@ -104,6 +104,9 @@ int feeds(const feeds_arguments& args) {
     }
     std::cout << fmt::format("{}: {} camera feeds at t = {:.2f} s ({}x{} each) written to {}\n",
                              scenario.name, n, t, args.width, args.height, args.out);
+  } catch (const config::scenario_error& e) {
+    std::cerr << e.what() << '\n';
+    return bad_input;
   } catch (const std::exception& e) {
     std::cerr << "argus feeds: " << e.what() << '\n';
     return run_failed;

@@ -77,6 +77,9 @@ int plan(const plan_arguments& args) {
   } catch (const std::invalid_argument& e) {
     std::cerr << "argus plan: " << e.what() << '\n';
     return bad_input;
+  } catch (const config::scenario_error& e) {
+    std::cerr << e.what() << '\n';
+    return bad_input;
   } catch (const std::exception& e) {
     std::cerr << "argus plan: " << e.what() << '\n';
     return run_failed;

@@ -100,6 +100,9 @@ int render(const render_arguments& args) {
     std::cout << fmt::format("{}: camera {} at t = {:.2f} s ({}x{}, {}) written to {} [{}]\n",
                              scenario.name, camera->id, t, view.width_px, view.height_px,
                              args.raw ? "raw" : "imaging model", args.out, renderer.device());
+  } catch (const config::scenario_error& e) {
+    std::cerr << e.what() << '\n';
+    return bad_input;
   } catch (const std::exception& e) {
     std::cerr << "argus render: " << e.what() << '\n';
     return run_failed;

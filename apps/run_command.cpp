@@ -162,6 +162,10 @@ void add_run_command(CLI::App& app, int& result) {
       const auto report = record_run(scenario, outcome.output_dir, !args->no_feeds);
       print_outcome(*args, scenario, outcome, report);
       result = ok;
+    } catch (const config::scenario_error& e) {
+      // A bad layout (or a flow naming no portal) is bad input, as in validate, plan and feeds.
+      std::cerr << e.what() << '\n';
+      result = bad_input;
     } catch (const std::exception& e) {
       std::cerr << "argus run: " << e.what() << '\n';
       result = run_failed;

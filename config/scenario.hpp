@@ -29,6 +29,47 @@ struct run_settings {
   friend bool operator==(const run_settings&, const run_settings&) = default;
 };
 
+/// Pedestrians' preferred walking speeds: a normal distribution truncated to [min, max].
+/// Defaults: Weidmann (1993), 1.34 m/s, sd 0.26 m/s (RiMEA test 7's reference).
+struct speed_settings {
+  double mean_mps = 1.34;
+  double sd_mps = 0.26;
+  double min_mps = 0.6;
+  double max_mps = 2.0;
+  friend bool operator==(const speed_settings&, const speed_settings&) = default;
+};
+
+/// An axis-aligned area of the floor plan, metres.
+struct plan_box {
+  double min_x_m = 0.0;
+  double min_y_m = 0.0;
+  double max_x_m = 0.0;
+  double max_y_m = 0.0;
+  friend bool operator==(const plan_box&, const plan_box&) = default;
+};
+
+/// A stream of pedestrians for a standard experiment: `count` appear in `spawn` (all at once
+/// when rate_per_s is 0, else rate_per_s per second from start), each walks to the layout's
+/// portal named `exit` and leaves there.
+struct flow_settings {
+  std::string name;
+  plan_box spawn;
+  unsigned count = 0;
+  double rate_per_s = 0.0;
+  seconds start{0.0};
+  std::string exit;
+  friend bool operator==(const flow_settings&, const flow_settings&) = default;
+};
+
+/// An area where density, speed and flow are measured (classic method: persons in the area
+/// over its area, their mean speed, specific flow = density x speed), written to
+/// measurements.csv.
+struct measurement_area {
+  std::string name;
+  plan_box area;
+  friend bool operator==(const measurement_area&, const measurement_area&) = default;
+};
+
 /// The station and its pedestrians.
 struct world_settings {
   /// Station layout file, relative to the scenario file; empty = built-in Penn Station.
@@ -39,6 +80,12 @@ struct world_settings {
   double spawn_rate_per_min = 60.0;
   /// Crowd partitions (actors) the station is split into.
   unsigned partitions = 1;
+  /// Where preferred speeds come from.
+  speed_settings speed;
+  /// Streams of pedestrians walking to an exit (standard experiments).
+  std::vector<flow_settings> flows;
+  /// Areas where density, speed and flow are measured.
+  std::vector<measurement_area> measurement_areas;
   friend bool operator==(const world_settings&, const world_settings&) = default;
 };
 

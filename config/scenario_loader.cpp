@@ -25,8 +25,13 @@ constexpr std::array<std::string_view, 9> scenario_keys{
 constexpr std::array<std::string_view, 3> sensing_keys{"mode", "sensor_model", "tracker_scales"};
 constexpr std::array<std::string_view, 6> run_keys{"seed",  "duration", "tick",
                                                    "speed", "threads",  "output_dir"};
-constexpr std::array<std::string_view, 4> world_keys{"layout", "population", "spawn_rate_per_min",
-                                                     "partitions"};
+constexpr std::array<std::string_view, 7> world_keys{
+    "layout", "population", "spawn_rate_per_min", "partitions",
+    "speed",  "flows",      "measurement_areas"};
+constexpr std::array<std::string_view, 4> speed_keys{"mean_mps", "sd_mps", "min_mps", "max_mps"};
+constexpr std::array<std::string_view, 7> flow_keys{"name",       "min",   "max", "count",
+                                                    "rate_per_s", "start", "exit"};
+constexpr std::array<std::string_view, 3> area_keys{"name", "min", "max"};
 constexpr std::array<std::string_view, 14> camera_keys{"id",
                                                        "position",
                                                        "height_m",
@@ -136,6 +141,68 @@ class scenario_parser {
     world.read("population", out.population, value_bounds::closed(0, 1'000'000));
     world.read("spawn_rate_per_min", out.spawn_rate_per_min, non_negative);
     world.read("partitions", out.partitions, value_bounds::at_least(1));
+    if (const auto node = world.find("speed")) {
+      mapping_reader speed(reader_, *node, "world.speed", speed_keys);
+      speed.read("mean_mps", out.speed.mean_mps, value_bounds::closed(0.1, 3.0));
+      speed.read("sd_mps", out.speed.sd_mps, value_bounds::closed(0.0, 1.0));
+      speed.read("min_mps", out.speed.min_mps, value_bounds::closed(0.1, 3.0));
+      speed.read("max_mps", out.speed.max_mps, value_bounds::closed(0.1, 3.0));
+      if (out.speed.min_mps > out.speed.mean_mps || out.speed.mean_mps > out.speed.max_mps) {
+        reader_.report(*node, "world.speed",
+                       fmt::format("expected min_mps <= mean_mps <= max_mps, got {} <= {} <= {}",
+                                   out.speed.min_mps, out.speed.mean_mps, out.speed.max_mps));
+      }
+    }
+    if (const auto node = world.find("flows")) {
+      if (reader_.expect_list(*node, "world.flows")) {
+        for (std::size_t index = 0; index < node->size(); ++index) {
+          const auto path = item("world.flows", index);
+          mapping_reader flow(reader_, (*node)[index], path, flow_keys);
+          if (!flow.is_mapping()) continue;
+          flow_settings f;
+          flow.read("name", f.name);
+          read_box(flow, f.spawn);
+          if (flow.require("count")) flow.read("count", f.count, value_bounds::closed(1, 100'000));
+          flow.read("rate_per_s", f.rate_per_s, non_negative);
+          flow.read("start", f.start, non_negative);
+          if (flow.require("exit", "the name of a portal of the layout")) {
+            flow.read("exit", f.exit);
+          }
+          out.flows.push_back(std::move(f));
+        }
+      }
+    }
+    if (const auto node = world.find("measurement_areas")) {
+      if (reader_.expect_list(*node, "world.measurement_areas")) {
+        for (std::size_t index = 0; index < node->size(); ++index) {
+          const auto path = item("world.measurement_areas", index);
+          mapping_reader area(reader_, (*node)[index], path, area_keys);
+          if (!area.is_mapping()) continue;
+          measurement_area a;
+          area.read("name", a.name);
+          read_box(area, a.area);
+          out.measurement_areas.push_back(std::move(a));
+        }
+      }
+    }
+  }
+
+  /// `min` and `max` corners of a box in `map`, min < max on both axes.
+  void read_box(mapping_reader& map, plan_box& out) {
+    const bool has_min = map.require("min");
+    const bool has_max = map.require("max");
+    if (!has_min || !has_max) return;
+    plan_point low;
+    plan_point high;
+    read_position(*map.find("min"), map.field("min"), low);
+    read_position(*map.find("max"), map.field("max"), high);
+    if (low.x_m >= high.x_m || low.y_m >= high.y_m) {
+      reader_.report(*map.find("max"), map.field("max"),
+                     fmt::format("expected max > min on both axes, got min [{}, {}], max [{}, {}]",
+                                 low.x_m, low.y_m, high.x_m, high.y_m));
+      return;
+    }
+    out = {low.x_m, low.y_m, high.x_m, high.y_m};
   }
 
   void read_cameras(const YAML::Node& node, std::vector<camera_settings>& out) {

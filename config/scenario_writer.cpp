@@ -182,6 +182,24 @@ std::string to_yaml(const scenario& s) {
   out.entry(1, "population", fmt::format("{}", s.world.population));
   out.entry(1, "spawn_rate_per_min", number(s.world.spawn_rate_per_min));
   out.entry(1, "partitions", fmt::format("{}", s.world.partitions));
+  out.entry(1, "speed",
+            fmt::format("{{mean_mps: {}, sd_mps: {}, min_mps: {}, max_mps: {}}}",
+                        number(s.world.speed.mean_mps), number(s.world.speed.sd_mps),
+                        number(s.world.speed.min_mps), number(s.world.speed.max_mps)));
+  auto box_text = [](const plan_box& b) {
+    return fmt::format("min: [{}, {}], max: [{}, {}]", number(b.min_x_m), number(b.min_y_m),
+                       number(b.max_x_m), number(b.max_y_m));
+  };
+  out.line(1, s.world.flows.empty() ? "flows: []" : "flows:");
+  for (const auto& f : s.world.flows) {
+    out.line(2, fmt::format("- {{name: {}, {}, count: {}, rate_per_s: {}, start: {}, exit: {}}}",
+                            quoted(f.name), box_text(f.spawn), f.count, number(f.rate_per_s),
+                            duration(f.start), quoted(f.exit)));
+  }
+  out.line(1, s.world.measurement_areas.empty() ? "measurement_areas: []" : "measurement_areas:");
+  for (const auto& a : s.world.measurement_areas) {
+    out.line(2, fmt::format("- {{name: {}, {}}}", quoted(a.name), box_text(a.area)));
+  }
 
   if (s.cameras.empty()) {
     out.line(0, "cameras: []");

@@ -40,9 +40,12 @@ void write_mot(const std::filesystem::path& dir, const config::scenario& scenari
       if (frames == log.frames.end()) return;
       for (const auto& f : frames->second) {
         if (f.tick >= ticks) break;
-        for (const auto& v : f.visible)
+        for (const auto& v : f.visible) {
+          // A sliver at the frame's edge would print as a 0.00-pixel box, which MOT rejects.
+          if (v.box.width < 0.005 || v.box.height < 0.005) continue;
           fmt::print(out, "{},{},{:.2f},{:.2f},{:.2f},{:.2f},1,1,{:.4f}\n", f.tick + 1,
                      v.pedestrian, v.box.x, v.box.y, v.box.width, v.box.height, v.visibility);
+        }
       }
     });
     write_whole_file(tracker_root / (sequence + ".txt"), [&](std::ostream& out) {

@@ -133,20 +133,37 @@ appearance draw_appearance(rng& random) {
   return look;
 }
 
-pedestrian make_pedestrian(int id, std::uint64_t run_seed, const vec2& position, int entry_portal,
-                           bool from_platform) {
+namespace {
+
+/// Stream tag of the preferred-speed draws, apart from the pedestrian's main stream.
+constexpr std::uint64_t speed_stream = 0x7370656564737472ULL;  // "speedstr"
+
+/// Seeds `p`'s generator, draws its looks, speed and heading.
+pedestrian make_body(int id, std::uint64_t run_seed, const vec2& position,
+                     const speed_distribution& speeds) {
   pedestrian p;
   p.random = rng(config::derive_seed(config::derive_seed(run_seed, pedestrian_stream),
                                      static_cast<std::uint64_t>(id)));
   p.state.id = id;
   p.state.position = position;
   p.state.look = draw_appearance(p.random);
-  p.preferred_speed_mps = p.random.uniform(1.0, 1.5);
+  rng speed_random(config::derive_seed(config::derive_seed(run_seed, speed_stream),
+                                       static_cast<std::uint64_t>(id)));
+  p.preferred_speed_mps = speeds.draw(speed_random);
   p.state.heading_rad = p.random.uniform(-M_PI, M_PI);
+  return p;
+}
+
+}  // namespace
+
+pedestrian make_pedestrian(int id, std::uint64_t run_seed, const vec2& position, int entry_portal,
+                           int entry_stairs, const speed_distribution& speeds) {
+  pedestrian p = make_body(id, run_seed, position, speeds);
   p.entry_portal = entry_portal;
+  p.entry_stairs = entry_stairs;
   // The agenda: errands in the station, then the platform or the street.
   auto add = [&](goal_kind g) { p.agenda[p.agenda_size++] = g; };
-  if (from_platform) {
+  if (entry_stairs >= 0) {
     // Arriving passengers: a snack or a meeting, then out to the street.
     if (p.random.chance(0.3)) add(goal_kind::use_vending_machine);
     if (p.random.chance(0.3)) add(goal_kind::meet_in_waiting_room);
@@ -165,6 +182,15 @@ pedestrian make_pedestrian(int id, std::uint64_t run_seed, const vec2& position,
     }
     add(p.random.chance(0.85) ? goal_kind::go_to_platform : goal_kind::leave_station);
   }
+  p.state.goal = p.agenda[0];
+  return p;
+}
+
+pedestrian make_flow_pedestrian(int id, std::uint64_t run_seed, const vec2& position,
+                                int exit_portal, const speed_distribution& speeds) {
+  pedestrian p = make_body(id, run_seed, position, speeds);
+  p.flow_exit = exit_portal;
+  p.agenda[p.agenda_size++] = goal_kind::leave_station;
   p.state.goal = p.agenda[0];
   return p;
 }
@@ -338,14 +364,23 @@ class stepper {
 
   bool choose_stairs() {
     const auto& stairs = where_.plan().stairways;
-    if (stairs.empty()) return false;
-    const auto index = self_.random.below(static_cast<std::uint32_t>(stairs.size()));
+    // An arriving passenger does not go straight back down the stairs it came up.
+    const bool skip_entry = self_.entry_stairs >= 0 && stairs.size() > 1;
+    const auto choices = stairs.size() - (skip_entry ? 1 : 0);
+    if (choices == 0) return false;
+    std::size_t index = self_.random.below(static_cast<std::uint32_t>(choices));
+    if (skip_entry && index >= static_cast<std::size_t>(self_.entry_stairs)) ++index;
     self_.target_index = static_cast<int>(index);
     self_.field = where_.target(target_kind::stairs, index);
     return true;
   }
 
   bool choose_exit() {
+    if (self_.flow_exit >= 0) {
+      self_.target_index = self_.flow_exit;
+      self_.field = where_.target(target_kind::portal, static_cast<std::size_t>(self_.flow_exit));
+      return true;
+    }
     std::vector<std::size_t> streets;
     const auto& portals = where_.plan().portals;
     for (std::size_t i = 0; i < portals.size(); ++i) {
@@ -381,6 +416,12 @@ class stepper {
         const auto rank = previous_.queue_rank(s_.counter, s_.queue_join_tick, s_.id);
         self_.point =
             c.service_point + c.queue_direction * c.queue_spacing_m * static_cast<double>(rank);
+        self_.queued_s += dt;
+        if (self_.queued_s > settings_.queue_give_up_s) {
+          // Waited too long (a line that does not move): leave it and go on.
+          abandon_goal();
+          return true;
+        }
         if (rank == 0 && (s_.position - c.service_point).norm() < 0.25) {
           s_.doing = where_.is_vending_machine(static_cast<std::size_t>(s_.counter))
                          ? activity::using_vending_machine
@@ -422,15 +463,19 @@ class stepper {
       case goal_kind::buy_ticket:
       case goal_kind::use_vending_machine: {
         const auto& c = where_.counter(static_cast<std::size_t>(self_.target_index));
-        // Join the line on coming near it; from then on the snapshot ranks the line.
-        if ((s_.position - c.service_point).norm() < 10.0 &&
-            where_.distance_to(self_.field, s_.position) < 14.0) {
+        // Join the line on coming within 10 m of it on foot (not through an obstacle); from
+        // then on the snapshot ranks the line.
+        // A cheap test first: the field's distance is never shorter than the straight one by
+        // more than a grid cell's diagonal (0.71 m), so this excludes no one it would admit.
+        if ((s_.position - c.service_point).norm() < 11.0 &&
+            where_.distance_to(self_.field, s_.position) < 10.0) {
           if (previous_.queue_length(self_.target_index) >= c.max_queue_length) {
             abandon_goal();
             return true;
           }
           s_.counter = self_.target_index;
           s_.queue_join_tick = tick_;
+          self_.queued_s = 0.0;
           s_.doing = activity::queueing;
           emit(event_kind::joined_queue, s_.counter);
           const auto rank = previous_.queue_rank(s_.counter, tick_, s_.id);
@@ -483,6 +528,41 @@ class stepper {
     double limit;
   };
 
+  /// The point of { v : n_k . v <= limit_k for all k } closest to `preferred`: an incremental
+  /// 2-D linear program (Seidel; RVO2's linearProgram2 with the distance objective). Every
+  /// half-plane contains v = 0, so the set is never empty; the planes are visited in their
+  /// fixed order, so the result is deterministic.
+  static vec2 closest_feasible(const vec2& preferred, const half_plane* planes, std::size_t count) {
+    vec2 v = preferred;
+    for (std::size_t i = 0; i < count; ++i) {
+      const vec2& n = planes[i].normal;
+      if (n.dot(v) <= planes[i].limit) continue;
+      // The optimum of planes 0..i lies on line i: p + t d.
+      const vec2 p = n * planes[i].limit;
+      const vec2 d{-n.y(), n.x()};
+      double low = -std::numeric_limits<double>::infinity();
+      double high = std::numeric_limits<double>::infinity();
+      bool empty = false;
+      for (std::size_t j = 0; j < i; ++j) {
+        const double denominator = planes[j].normal.dot(d);
+        const double numerator = planes[j].limit - planes[j].normal.dot(p);
+        if (std::abs(denominator) < 1e-12) {
+          if (numerator < 0.0) empty = true;
+          continue;
+        }
+        const double t = numerator / denominator;
+        if (denominator > 0.0) {
+          high = std::min(high, t);
+        } else {
+          low = std::max(low, t);
+        }
+      }
+      if (empty || low > high) return vec2::Zero();  // numerically degenerate: stand
+      v = p + std::clamp(d.dot(preferred - p), low, high) * d;
+    }
+    return v;
+  }
+
   /// Social force plus constraints, integrated over one tick (semi-implicit Euler).
   void move() {
     const double dt = settings_.tick_s;
@@ -490,31 +570,49 @@ class stepper {
         s_.doing == activity::using_vending_machine) {
       // Being served or seated: planted. v = 0 satisfies everyone's constraints.
       s_.velocity = vec2::Zero();
+      self_.blocked_s = 0.0;
       return;
     }
-    const double v0 = self_.preferred_speed_mps;
+    // Stairs and other slow floor scale the preferred speed (RiMEA tests 2 and 3).
+    const double v0 = self_.preferred_speed_mps * where_.speed_factor(s_.position);
     vec2 desired = vec2::Zero();
     const double to_point = self_.has_point ? (self_.point - s_.position).norm() : 1e9;
-    // In a line, steer straight at the slot: the line stands in open floor by the counter.
-    if (to_point < settings_.direct_steering_m || s_.doing == activity::queueing) {
+    // Steer straight at a seat, slot or spot only when it is in sight; a line's slot behind an
+    // obstacle is reached along the counter's distance field like any route.
+    const bool direct =
+        (to_point < settings_.direct_steering_m || s_.doing == activity::queueing) &&
+        where_.sight_clear(s_.position, self_.point);
+    if (direct) {
       // Arrival: slow down over the last metre.
       if (to_point > 0.03)
         desired = (self_.point - s_.position) / to_point * v0 * std::min(1.0, to_point);
     } else {
       desired = where_.direction_to(self_.field, s_.position) * v0;
     }
+    const double desired_speed = desired.norm();
+    const vec2 desired_direction =
+        desired_speed > 1e-9 ? vec2(desired / desired_speed) : vec2(vec2::Zero());
     const vec2 heading =
-        s_.velocity.norm() > 0.05 ? vec2(s_.velocity.normalized()) : desired.normalized();
-    vec2 acceleration = (desired - s_.velocity) / settings_.relaxation_s;
+        s_.velocity.norm() > 0.05 ? vec2(s_.velocity.normalized()) : desired_direction;
     std::array<half_plane, 48> planes;
     std::size_t plane_count = 0;
     const double radius = s_.radius_m();
     const bool in_line = s_.counter >= 0 && s_.doing == activity::queueing;
+    const bool wants_to_walk = !in_line && desired_speed > 0.3 * v0;
+    // Arch breaking: pressed for a while against others who stand still ahead, the one
+    // nearest its goal goes on and the others step back from it.
+    bool yield = false;
+    const bool stuck = wants_to_walk && self_.blocked_s > settings_.yield_after_s;
+    vec2 repulsion = vec2::Zero();
+    double nearest_ahead_m = std::numeric_limits<double>::infinity();
     previous_.for_each_near(s_.position, [&](const pedestrian_state& other) {
       if (other.id == s_.id) return;
       const vec2 offset = other.position - s_.position;
-      const double distance = offset.norm();
-      if (distance > snapshot::neighbour_cell_m || distance < 1e-9) return;
+      // Most of the 3 x 3 cells' people are out of reach: reject them before the sqrt.
+      const double distance_squared = offset.squaredNorm();
+      constexpr double reach_squared = snapshot::neighbour_cell_m * snapshot::neighbour_cell_m;
+      if (distance_squared > reach_squared || distance_squared < 1e-18) return;
+      const double distance = std::sqrt(distance_squared);
       const vec2 n = offset / distance;
       const double gap = distance - radius - other.radius_m();
       // People in the same line stand close on purpose; only the constraint keeps them apart.
@@ -523,13 +621,38 @@ class stepper {
         const double cos_phi = heading.dot(n);
         const double weight =
             settings_.anisotropy + (1.0 - settings_.anisotropy) * (1.0 + cos_phi) / 2.0;
-        acceleration -=
+        repulsion -=
             n * (settings_.social_strength * weight * std::exp(-gap / settings_.social_range_m));
+      }
+      if (!same_line) {
+        // Headway: the free path along the way ahead before touching someone in it.
+        const double along = offset.dot(desired_direction);
+        const double contact = radius + other.radius_m();
+        if (along > 0.0) {
+          const double across =
+              std::abs(offset.x() * desired_direction.y() - offset.y() * desired_direction.x());
+          if (across < contact) {
+            const double free_path = along - std::sqrt(contact * contact - across * across);
+            nearest_ahead_m = std::min(nearest_ahead_m, std::max(free_path, 0.0));
+          }
+        }
+      }
+      if (stuck && gap < 0.05 && desired_direction.dot(n) > 0.0 &&
+          other.velocity.squaredNorm() < 0.01 && !is_waiting(other.doing) &&
+          (other.distance_to_goal_m < s_.distance_to_goal_m ||
+           (other.distance_to_goal_m == s_.distance_to_goal_m && other.id < s_.id))) {
+        yield = true;
       }
       if (gap < 0.6 && plane_count < planes.size()) {
         planes[plane_count++] = {n, std::max(gap - 0.01, 0.0) / (2.0 * dt)};
       }
     });
+    if (std::isfinite(nearest_ahead_m)) {
+      desired *= std::min(1.0, nearest_ahead_m / (settings_.headway_s * v0));
+    }
+    // Yielding: stop pushing; the repulsion of the one given way to then moves one aside.
+    if (yield) desired = vec2::Zero();
+    vec2 acceleration = (desired - s_.velocity) / settings_.relaxation_s + repulsion;
     for (const auto index : where_.segments_near(s_.position)) {
       const vec2 closest = where_.segments()[index].closest_point(s_.position);
       const vec2 offset = closest - s_.position;
@@ -545,14 +668,9 @@ class stepper {
     vec2 velocity = s_.velocity + acceleration * dt;
     const double max_speed = 1.4 * v0;
     if (velocity.norm() > max_speed) velocity *= max_speed / velocity.norm();
-    // Slide along the constraints first (keeps people moving past each other) ...
-    for (int pass = 0; pass < 3; ++pass) {
-      for (std::size_t k = 0; k < plane_count; ++k) {
-        const double excess = velocity.dot(planes[k].normal) - planes[k].limit;
-        if (excess > 0.0) velocity -= excess * planes[k].normal;
-      }
-    }
-    // ... then scale down until every half-plane holds (each contains v = 0).
+    velocity = closest_feasible(velocity, planes.data(), plane_count);
+    // Guard against rounding in the program: scale down until every half-plane holds (each
+    // contains v = 0, so a shorter velocity along the same line stays feasible).
     double scale = 1.0;
     for (std::size_t k = 0; k < plane_count; ++k) {
       const double along = velocity.dot(planes[k].normal);
@@ -562,6 +680,11 @@ class stepper {
     s_.velocity = velocity;
     s_.position += velocity * dt;
     if (velocity.norm() > 0.1) s_.heading_rad = std::atan2(velocity.y(), velocity.x());
+    if (wants_to_walk && velocity.norm() < 0.1 * v0) {
+      self_.blocked_s += dt;
+    } else if (!yield) {
+      self_.blocked_s = 0.0;
+    }
   }
 
   /// Watchdog: no progress for give_up_s means the route is blocked; choose again.
@@ -578,7 +701,16 @@ class stepper {
       return;
     }
     self_.stalled_s += settings_.tick_s;
-    if (self_.stalled_s > settings_.give_up_s) abandon_goal();
+    if (self_.stalled_s <= settings_.give_up_s) return;
+    if (is_final(s_.goal)) {
+      // A way out that is slow to reach is usually a jam in front of it (the layout check
+      // guarantees it can be reached): turning back through the crowd to another exit only
+      // makes the jam worse, so keep going and start a new watch.
+      self_.stalled_s = 0.0;
+      self_.best_distance_m = s_.distance_to_goal_m;
+      return;
+    }
+    abandon_goal();
   }
 
   const station& where_;

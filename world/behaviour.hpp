@@ -6,6 +6,7 @@
 
 #include "world/event.hpp"
 #include "world/pedestrian.hpp"
+#include "world/speed_distribution.hpp"
 
 namespace argus::world {
 
@@ -20,27 +21,46 @@ struct behaviour_settings {
   /// Relaxation time towards the desired velocity.
   double relaxation_s = 0.5;
   /// Pedestrian-pedestrian repulsion strength (m/s^2) and range (m).
-  double social_strength = 2.0;
-  double social_range_m = 0.3;
+  /// Short and stiff (Helbing et al. 2000 use 25 m/s^2 over 0.08 m): stronger than the
+  /// driving force at contact, so people in a jam keep a few centimetres apart and keep room
+  /// to slide past each other instead of locking into arches.
+  double social_strength = 8.0;
+  double social_range_m = 0.08;
   /// Weight of interactions behind a pedestrian (1 = isotropic).
   double anisotropy = 0.3;
   /// Wall repulsion strength (m/s^2) and range (m).
   double wall_strength = 3.0;
   double wall_range_m = 0.2;
+  /// Time gap kept to the pedestrian ahead: the desired speed is at most the free path ahead
+  /// (before touching someone in one's way) over this time, the collision-free speed model's
+  /// V(s) = min(v0, s / T) (Tordeux, Chraibi & Seyfried 2016, as JuPedSim uses it).
+  double headway_s = 0.1;
   /// Within this distance of a point target, steer straight at it instead of along the field.
   double direct_steering_m = 3.0;
   /// A walking pedestrian whose distance to its goal has not dropped by `progress_m` for
   /// `give_up_s` gives the goal up (or, for a final goal, picks another exit).
   double progress_m = 0.5;
   double give_up_s = 20.0;
+  /// A pedestrian in a line that has not been served after this long leaves the line.
+  double queue_give_up_s = 180.0;
+  /// A pedestrian that wants to walk but has stood still this long, pressed against others
+  /// who stand still too, yields to the one nearest its goal (see step_pedestrian).
+  double yield_after_s = 1.0;
 };
 
-/// Creates pedestrian `id` at `position`, drawing its appearance, speed and agenda from its
-/// own RNG (seeded with config::derive_seed from `run_seed` and `id`). `entry_portal` is
-/// the street portal it came in by, or -1 (stairs, or placed at start). Its first goal
-/// begins at its first step.
+/// Creates pedestrian `id` at `position`, drawing its appearance and agenda from its own RNG
+/// (seeded with config::derive_seed from `run_seed` and `id`) and its preferred speed from
+/// `speeds` with a second stream of its own (so the speed distribution can change without
+/// changing anyone's looks or errands). `entry_portal` is the street portal it came in by and
+/// `entry_stairs` the stairs it came up (an arriving passenger), each -1 when not. Its first
+/// goal begins at its first step.
 pedestrian make_pedestrian(int id, std::uint64_t run_seed, const vec2& position, int entry_portal,
-                           bool from_platform);
+                           int entry_stairs, const speed_distribution& speeds = {});
+
+/// Creates a flow pedestrian (world/flow.hpp): appearance and speed as make_pedestrian, and
+/// one goal, leaving by portal `exit_portal`.
+pedestrian make_flow_pedestrian(int id, std::uint64_t run_seed, const vec2& position,
+                                int exit_portal, const speed_distribution& speeds = {});
 
 /// One tick of one pedestrian, phase one of the two-phase step: decides (behaviour state
 /// machine) and moves (social force plus non-penetration constraints) using only `previous`
@@ -59,10 +79,22 @@ pedestrian make_pedestrian(int id, std::uint64_t run_seed, const vec2& position,
 ///             '--last goal--> leaving --in stairs / street portal--> (gone)
 /// ```
 ///
+/// Speed: the desired speed is at most the free path s ahead (before touching someone in
+/// one's way) over the headway time T, V(s) = min(v0, s / T) (the collision-free speed
+/// model, Tordeux et al. 2016), so walkers slow smoothly as the gaps close and stand at
+/// contact, the jam density.
+///
 /// Non-penetration: each neighbour j at gap g adds the half-plane v.n <= g / (2 dt) (each of
 /// the pair takes at most half the gap; v = 0 always satisfies it), each wall at gap g adds
-/// v.n <= g / dt. The velocity is projected onto the violated half-planes, then scaled down
-/// until all hold, so no two discs overlap and no one crosses a wall, by construction.
+/// v.n <= g / dt. The velocity is the point of the feasible polygon closest to the
+/// social-force velocity (an incremental 2-D linear program, as RVO2 solves its ORCA
+/// half-planes), so no two discs overlap and no one crosses a wall, by construction.
+///
+/// Arches: a pedestrian that has wanted to walk but stood still for yield_after_s, pressed
+/// against others ahead who stand still too, yields (stops pushing) unless it is the one of
+/// them nearest its goal (ties: lowest id). Decided from the snapshot only, so it is
+/// deterministic; one member of every arch keeps pushing, its repulsion moves the others
+/// aside, and the arch breaks.
 std::optional<pedestrian> step_pedestrian(const station& where, const snapshot& previous,
                                           const pedestrian& current,
                                           const behaviour_settings& settings,

@@ -1,5 +1,8 @@
 #include "world/crowd.hpp"
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
 #include <algorithm>
 #include <chrono>
 #include <stdexcept>
@@ -13,14 +16,50 @@ crowd_settings crowd_settings::from(const config::scenario& scenario) {
   out.spawn_rate_per_min = scenario.world.spawn_rate_per_min;
   out.partitions = scenario.world.partitions;
   out.behaviour.tick_s = scenario.run.tick.count();
+  const auto& speed = scenario.world.speed;
+  out.speeds = {speed.mean_mps, speed.sd_mps, speed.min_mps, speed.max_mps};
+  for (const auto& f : scenario.world.flows) {
+    flow each;
+    each.name = f.name;
+    each.spawn_area = {{f.spawn.min_x_m, f.spawn.min_y_m}, {f.spawn.max_x_m, f.spawn.max_y_m}};
+    each.count = f.count;
+    each.rate_per_s = f.rate_per_s;
+    each.start_s = f.start.count();
+    each.exit_name = f.exit;
+    out.flows.push_back(std::move(each));
+  }
+  out.source_path = scenario.source_path;
+  return out;
+}
+
+spawner_settings crowd_settings::spawning(const station& where) const {
+  spawner_settings out{run_seed, population, spawn_rate_per_min, behaviour.tick_s, speeds, flows};
+  std::vector<config::problem> problems;
+  const auto& portals = where.plan().portals;
+  for (std::size_t i = 0; i < out.flows.size(); ++i) {
+    auto& f = out.flows[i];
+    if (f.exit_portal >= 0 && static_cast<std::size_t>(f.exit_portal) < portals.size()) continue;
+    const auto named = std::find_if(portals.begin(), portals.end(),
+                                    [&](const portal& p) { return p.name == f.exit_name; });
+    if (named == portals.end()) {
+      std::vector<std::string> names;
+      for (const auto& p : portals) names.push_back("'" + p.name + "'");
+      problems.push_back(
+          {source_path, 0, 0, fmt::format("world.flows[{}].exit", i),
+           fmt::format("expected the name of a portal of layout {} ({}), got '{}'",
+                       where.plan().source_path, fmt::join(names, ", "), f.exit_name)});
+      continue;
+    }
+    f.exit_portal = static_cast<int>(named - portals.begin());
+  }
+  if (!problems.empty()) throw config::scenario_error(std::move(problems));
   return out;
 }
 
 crowd::crowd(std::shared_ptr<const station> where, crowd_settings settings)
     : station_(std::move(where)),
       settings_(settings),
-      spawner_({settings.run_seed, settings.population, settings.spawn_rate_per_min,
-                settings.behaviour.tick_s}),
+      spawner_(settings.spawning(*station_)),
       bounds_(vertical_strips(*station_, settings.partitions)),
       owned_(bounds_.size()) {
   // The neighbour index reaches 2 m; at up to 2.1 m/s two pedestrians close at most

@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <memory>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "config/scenario.hpp"
@@ -23,9 +24,19 @@ struct crowd_settings {
   /// Start with the target population already in the station (see spawner::populate).
   bool prefill = true;
   behaviour_settings behaviour;
+  /// Where preferred speeds come from.
+  speed_distribution speeds;
+  /// Streams of pedestrians to an exit (standard experiments).
+  std::vector<flow> flows;
+  /// The scenario file the flows came from, for problems.
+  std::string source_path;
 
-  /// The crowd a scenario asks for (seed, tick, world settings).
+  /// The crowd a scenario asks for (seed, tick, world settings, speeds, flows).
   static crowd_settings from(const config::scenario& scenario);
+
+  /// The spawner's settings, with each flow's exit resolved against `where`'s portals;
+  /// throws config::scenario_error naming the flow when its exit is no portal of the layout.
+  spawner_settings spawning(const station& where) const;
 };
 
 /// The whole crowd stepped in one thread: the reference sequence that the crowd-partition

@@ -27,10 +27,14 @@ struct box {
 enum class region_kind { concourse, waiting_room, arcade, platforms, tracks, other };
 
 /// A named area of the floor. Pedestrians walk only inside regions that are not `tracks`.
+/// `speed_factor` scales the preferred speed of whoever walks in it: a flight of stairs in
+/// this 2-D plan is a region where people walk slower (RiMEA tests 2 and 3; Fruin/Weidmann
+/// give about 0.6 of the level speed upwards and 0.7 downwards).
 struct region {
   std::string name;
   region_kind kind = region_kind::other;
   box area;
+  double speed_factor = 1.0;
 };
 
 /// A `street` portal is a door to the outside where pedestrians enter and leave; an

@@ -52,7 +52,8 @@ constexpr std::array<std::string_view, 11> layout_keys{
     "name",          "size_m",           "walls",   "obstacles", "regions",       "portals",
     "ticket_booths", "vending_machines", "benches", "stairs",    "meeting_points"};
 constexpr std::array<std::string_view, 4> obstacle_keys{"name", "polygon", "min", "max"};
-constexpr std::array<std::string_view, 4> region_keys{"name", "kind", "min", "max"};
+constexpr std::array<std::string_view, 5> region_keys{"name", "kind", "min", "max", "speed_factor"};
+constexpr std::array<std::string_view, 4> portal_keys{"name", "kind", "min", "max"};
 constexpr std::array<std::string_view, 9> counter_keys{"name",
                                                        "min",
                                                        "max",
@@ -247,6 +248,7 @@ class layout_parser {
         }
       }
       if (auto b = read_box(map, node[i])) r.area = *b;
+      map.read("speed_factor", r.speed_factor, value_bounds::closed(0.1, 1.5));
       out.regions.push_back(std::move(r));
     }
   }
@@ -256,7 +258,7 @@ class layout_parser {
     if (!reader_.expect_list(node, "portals")) return;
     for (std::size_t i = 0; i < node.size(); ++i) {
       const auto path = item("portals", i);
-      mapping_reader map(reader_, node[i], path, region_keys);
+      mapping_reader map(reader_, node[i], path, portal_keys);
       if (!map.is_mapping()) continue;
       portal p;
       require_name(map, node[i], p.name, path);

@@ -12,7 +12,9 @@
 ///   - {name: kiosk, polygon: [[150, 49], [152, 49], [152, 51]]}
 /// regions:                                       # concourse | waiting_room | arcade |
 ///   - {name: waiting_room, kind: waiting_room, min: [65, 10], max: [140, 90]}  # platforms |
-/// portals:                                       # tracks | other; street | internal
+///   - {name: stairs_up, kind: other, min: [5, 0], max: [15, 2], speed_factor: 0.6}  # tracks |
+/// portals:                                       # other; street | internal; speed_factor
+///                                                # scales walking speed (stairs), 0.1-1.5
 ///   - {name: arcade_street, kind: street, min: [198, 42], max: [200, 58]}
 /// ticket_booths:                                 # vending_machines take the same keys
 ///   - {name: booth_1, min: [78.5, 88], max: [81.5, 90], service_point: [80, 87.3],

@@ -124,6 +124,14 @@ struct pedestrian {
   double stalled_s = 0.0;
   /// Portal it came in by (-1 for stairs), so it does not leave by the same door at once.
   int entry_portal = -1;
+  /// Stairs it came up by (-1 for a street portal), so it does not go straight back down.
+  int entry_stairs = -1;
+  /// The portal a flow pedestrian (see world/flow.hpp) leaves by, or -1.
+  int flow_exit = -1;
+  /// Time it has wanted to walk but stood (nearly) still: an arch or a deadlock forming.
+  double blocked_s = 0.0;
+  /// Time spent in a line without reaching the service point.
+  double queued_s = 0.0;
 };
 
 }  // namespace argus::world

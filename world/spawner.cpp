@@ -26,7 +26,10 @@ bool clear_of(const vec2& p, double radius, std::span<const pedestrian_state> pr
 }  // namespace
 
 spawner::spawner(spawner_settings settings)
-    : settings_(settings), random_(config::derive_seed(settings.run_seed, spawner_stream)) {
+    : settings_(settings),
+      random_(config::derive_seed(settings.run_seed, spawner_stream)),
+      flow_spawned_(settings_.flows.size(), 0),
+      flow_credit_(settings_.flows.size(), 0.0) {
   // nop
 }
 
@@ -59,7 +62,7 @@ std::vector<pedestrian> spawner::populate(const station& where, std::uint64_t ti
     const box& b =
         floors[static_cast<std::size_t>(std::min<std::ptrdiff_t>(which, floors.size() - 1))]->area;
     const vec2 p{random_.uniform(b.min.x(), b.max.x()), random_.uniform(b.min.y(), b.max.y())};
-    auto candidate = make_pedestrian(next_id_, settings_.run_seed, p, -1, false);
+    auto candidate = make_pedestrian(next_id_, settings_.run_seed, p, -1, -1, settings_.speeds);
     const double radius = candidate.state.radius_m();
     bool ok = where.fits(p, radius);
     const int cx = std::clamp(static_cast<int>(p.x() / cell), 0, w - 1);
@@ -109,8 +112,8 @@ bool spawner::place(const station& where, std::span<const pedestrian_state> pres
   const box& area = door >= 0 ? plan.portals[door].area : plan.stairways[-1 - door].area;
   const vec2 p{random_.uniform(area.min.x(), area.max.x()),
                random_.uniform(area.min.y(), area.max.y())};
-  auto candidate =
-      make_pedestrian(next_id_, settings_.run_seed, p, door >= 0 ? door : -1, door < 0);
+  auto candidate = make_pedestrian(next_id_, settings_.run_seed, p, door >= 0 ? door : -1,
+                                   door < 0 ? -1 - door : -1, settings_.speeds);
   if (!where.fits(p, candidate.state.radius_m()) ||
       !clear_of(p, candidate.state.radius_m(), present, fresh)) {
     return false;
@@ -125,7 +128,35 @@ std::vector<pedestrian> spawner::spawn(const station& where,
                                        std::span<const pedestrian_state> present,
                                        std::uint64_t tick, std::vector<event>& events) {
   std::vector<pedestrian> out;
-  if (present.size() >= settings_.population) {
+  const double now_s = static_cast<double>(tick) * settings_.tick_s;
+  for (std::size_t i = 0; i < settings_.flows.size(); ++i) {
+    const auto& f = settings_.flows[i];
+    if (now_s < f.start_s || flow_spawned_[i] >= f.count) continue;
+    unsigned wanted = f.count - flow_spawned_[i];
+    if (f.rate_per_s > 0.0) {
+      flow_credit_[i] += f.rate_per_s * settings_.tick_s;
+      wanted = std::min(wanted, static_cast<unsigned>(flow_credit_[i]));
+    }
+    // A few tries per newcomer; the spot may be taken (it then waits for a later tick).
+    for (unsigned placed = 0, tries = 0; placed < wanted && tries < 20 * wanted; ++tries) {
+      const box& area = f.spawn_area;
+      const vec2 p{random_.uniform(area.min.x(), area.max.x()),
+                   random_.uniform(area.min.y(), area.max.y())};
+      auto candidate =
+          make_flow_pedestrian(next_id_, settings_.run_seed, p, f.exit_portal, settings_.speeds);
+      if (!where.fits(p, candidate.state.radius_m()) ||
+          !clear_of(p, candidate.state.radius_m(), present, out)) {
+        continue;
+      }
+      events.push_back({tick, next_id_, event_kind::spawned, candidate.state.goal, -1});
+      out.push_back(std::move(candidate));
+      ++next_id_;
+      ++placed;
+      ++flow_spawned_[i];
+      if (f.rate_per_s > 0.0) flow_credit_[i] -= 1.0;
+    }
+  }
+  if (present.size() + out.size() >= settings_.population) {
     credit_ = 0.0;
     return out;
   }

@@ -5,8 +5,10 @@
 #include <vector>
 
 #include "world/event.hpp"
+#include "world/flow.hpp"
 #include "world/pedestrian.hpp"
 #include "world/rng.hpp"
+#include "world/speed_distribution.hpp"
 
 namespace argus::world {
 
@@ -20,6 +22,10 @@ struct spawner_settings {
   /// Newcomers per minute while below the target.
   double spawn_rate_per_min = 60.0;
   double tick_s = 1.0 / 15.0;
+  /// Where everyone's preferred speed comes from.
+  speed_distribution speeds;
+  /// Streams of pedestrians for standard experiments, spawned besides the population.
+  std::vector<flow> flows;
 };
 
 /// Brings pedestrians in at street portals and up the platform stairs so the population
@@ -38,13 +44,18 @@ class spawner {
   std::vector<pedestrian> populate(const station& where, std::uint64_t tick,
                                    std::vector<event>& events);
 
-  /// Newcomers for `tick`, placed where no one in `present` stands. Accumulates
-  /// spawn_rate_per_min per tick while below the target; a blocked portal delays them.
+  /// Newcomers for `tick`, placed where no one in `present` stands: first each flow's (all
+  /// at once, or rate_per_s from start_s on, until its count is reached; a spot taken
+  /// delays them), then the station's, accumulating spawn_rate_per_min per tick while below
+  /// the target population; a blocked portal delays them.
   std::vector<pedestrian> spawn(const station& where, std::span<const pedestrian_state> present,
                                 std::uint64_t tick, std::vector<event>& events);
 
   /// The id the next newcomer gets.
   int next_id() const noexcept { return next_id_; }
+
+  /// Pedestrians flow `index` has brought in so far.
+  unsigned flow_spawned(std::size_t index) const { return flow_spawned_[index]; }
 
  private:
   bool place(const station& where, std::span<const pedestrian_state> present,
@@ -55,6 +66,8 @@ class spawner {
   rng random_;
   int next_id_ = 1;
   double credit_ = 0.0;
+  std::vector<unsigned> flow_spawned_;
+  std::vector<double> flow_credit_;
 };
 
 }  // namespace argus::world

@@ -53,6 +53,19 @@ bool station::line_clear(const vec2& a, const vec2& b) const {
   return true;
 }
 
+bool station::sight_clear(const vec2& a, const vec2& b) const {
+  // line_clear sees segments within segment_reach_m of its start: walk in 1 m pieces.
+  const double length = (b - a).norm();
+  const int pieces = std::max(1, static_cast<int>(std::ceil(length)));
+  vec2 from = a;
+  for (int k = 1; k <= pieces; ++k) {
+    const vec2 to = a + (b - a) * (static_cast<double>(k) / pieces);
+    if (!line_clear(from, to)) return false;
+    from = to;
+  }
+  return true;
+}
+
 vec2 segment::closest_point(const vec2& p) const {
   const vec2 ab = b - a;
   const double length2 = ab.squaredNorm();
@@ -74,6 +87,8 @@ station::station(layout plan, navigation_settings settings)
       seats_.push_back({at, static_cast<int>(b)});
     }
   }
+  has_speed_factors_ = std::any_of(plan_.regions.begin(), plan_.regions.end(),
+                                   [](const region& r) { return r.speed_factor != 1.0; });
   build_segments();
   build_segment_index();
   build_grid();
@@ -187,6 +202,7 @@ void station::build_grid() {
   grid_h_ = static_cast<int>(std::ceil(plan_.size_m.y() / settings_.cell_m));
   blocked_.assign(static_cast<std::size_t>(grid_w_ * grid_h_), 1);
   near_wall_.assign(blocked_.size(), 0);
+  wall_cost_.assign(blocked_.size(), 1.0f);
   for (int y = 0; y < grid_h_; ++y) {
     for (int x = 0; x < grid_w_; ++x) {
       const vec2 centre{(x + 0.5) * settings_.cell_m, (y + 0.5) * settings_.cell_m};
@@ -194,6 +210,10 @@ void station::build_grid() {
       const auto c = static_cast<std::size_t>(y * grid_w_ + x);
       blocked_[c] = !walkable(centre) || clearance < settings_.clearance_m;
       near_wall_[c] = clearance < settings_.wall_band_m;
+      // The cost of walking rises smoothly towards a wall (a step would put a kink in the
+      // field that turns the descent direction across the route at the band's edge).
+      wall_cost_[c] = static_cast<float>(
+          1.0 + settings_.wall_penalty * std::max(0.0, 1.0 - clearance / settings_.wall_band_m));
     }
   }
   // Walls have no thickness: cells on both sides of one can both be free, so every grid
@@ -223,7 +243,6 @@ std::vector<float> station::dijkstra(const std::vector<int>& sources) const {
   }
   const float cell = static_cast<float>(settings_.cell_m);
   const float diagonal = cell * std::sqrt(2.0f);
-  const float penalty = static_cast<float>(settings_.wall_penalty);
   while (!open.empty()) {
     const auto [d, c] = open.top();
     open.pop();
@@ -243,8 +262,9 @@ std::vector<float> station::dijkstra(const std::vector<int>& sources) const {
         if (dx != 0 && dy != 0 && (blocked_[cy * grid_w_ + nx] || blocked_[ny * grid_w_ + cx])) {
           continue;
         }
+        // Mean cost of the two cells the step joins.
         const float step =
-            (dx != 0 && dy != 0 ? diagonal : cell) * (near_wall_[n] ? 1.0f + penalty : 1.0f);
+            (dx != 0 && dy != 0 ? diagonal : cell) * 0.5f * (wall_cost_[c] + wall_cost_[n]);
         if (d + step < distance[n]) {
           distance[n] = d + step;
           open.push({distance[n], n});
@@ -291,16 +311,52 @@ void station::build_fields() {
     }
     return cells;
   };
-  std::vector<std::pair<std::string, std::vector<int>>> targets;
+  // Each target: its element path for problems, its name, and its source cells.
+  struct target_cells {
+    std::string element;
+    std::string name;
+    std::vector<int> cells;
+  };
+  std::vector<target_cells> targets;
+  std::vector<config::problem> problems;
+  auto report = [&](const std::string& element, std::string message) {
+    problems.push_back({plan_.source_path, 0, 0, element, std::move(message)});
+  };
+  auto element = [](const char* list, std::size_t index) {
+    return fmt::format("{}[{}]", list, index);
+  };
   field_base_.assign(5, 0);
   field_base_[0] = 0;
-  for (const auto& p : plan_.portals) targets.push_back({p.name, box_cells(p.area)});
+  // Portals and stairs: a pedestrian leaves only inside the box, so its own cells, no snapping.
+  auto exit_cells = [&](const std::string& where, const std::string& name, const box& b) {
+    auto cells = box_cells(b);
+    if (cells.size() == 1 && !b.contains({(cells[0] % grid_w_ + 0.5) * settings_.cell_m,
+                                          (cells[0] / grid_w_ + 0.5) * settings_.cell_m})) {
+      report(where, fmt::format("'{}' has no walkable floor inside its box (a pedestrian leaves "
+                                "only inside it; the nearest free floor is outside)",
+                                name));
+    }
+    return cells;
+  };
+  for (std::size_t i = 0; i < plan_.portals.size(); ++i) {
+    const auto& p = plan_.portals[i];
+    targets.push_back(
+        {element("portals", i), p.name, exit_cells(element("portals", i), p.name, p.area)});
+  }
   field_base_[1] = static_cast<int>(targets.size());
-  for (const auto& s : plan_.stairways) targets.push_back({s.name, box_cells(s.area)});
+  for (std::size_t i = 0; i < plan_.stairways.size(); ++i) {
+    const auto& st = plan_.stairways[i];
+    targets.push_back(
+        {element("stairs", i), st.name, exit_cells(element("stairs", i), st.name, st.area)});
+  }
   field_base_[2] = static_cast<int>(targets.size());
-  for (const auto* c : counters_) {
+  for (std::size_t i = 0; i < counters_.size(); ++i) {
+    const auto* c = counters_[i];
     const int cell = nearest_free(c->service_point);
-    targets.push_back({c->name, cell >= 0 ? std::vector<int>{cell} : std::vector<int>{}});
+    const auto where = i < plan_.ticket_booths.size()
+                           ? element("ticket_booths", i)
+                           : element("vending_machines", i - plan_.ticket_booths.size());
+    targets.push_back({where, c->name, cell >= 0 ? std::vector<int>{cell} : std::vector<int>{}});
   }
   field_base_[3] = static_cast<int>(targets.size());
   for (std::size_t b = 0; b < plan_.benches.size(); ++b) {
@@ -309,28 +365,128 @@ void station::build_fields() {
       if (s.bench != static_cast<int>(b)) continue;
       if (const int c = nearest_free(s.position); c >= 0) cells.push_back(c);
     }
-    targets.push_back({plan_.benches[b].name, cells});
+    targets.push_back({element("benches", b), plan_.benches[b].name, cells});
   }
   field_base_[4] = static_cast<int>(targets.size());
-  for (const auto& m : plan_.meeting_points) {
+  for (std::size_t i = 0; i < plan_.meeting_points.size(); ++i) {
+    const auto& m = plan_.meeting_points[i];
     const int cell = nearest_free(m.position);
-    targets.push_back({m.name, cell >= 0 ? std::vector<int>{cell} : std::vector<int>{}});
+    targets.push_back({element("meeting_points", i), m.name,
+                       cell >= 0 ? std::vector<int>{cell} : std::vector<int>{}});
+  }
+  // Entrances: street portals and stairs (arriving passengers come up there).
+  std::vector<std::size_t> entrances;
+  for (std::size_t i = 0; i < plan_.portals.size(); ++i) {
+    if (plan_.portals[i].kind == portal_kind::street) entrances.push_back(i);
+  }
+  for (std::size_t i = 0; i < plan_.stairways.size(); ++i) {
+    entrances.push_back(static_cast<std::size_t>(field_base_[1]) + i);
   }
   const auto free_cells = std::count(blocked_.begin(), blocked_.end(), std::uint8_t{0});
-  for (const auto& [name, sources] : targets) {
-    if (sources.empty()) {
-      throw std::invalid_argument(fmt::format(
-          "{}: '{}' lies on no walkable floor (navigation grid)", plan_.source_path, name));
+  for (const auto& target : targets) {
+    if (target.cells.empty()) {
+      report(target.element,
+             fmt::format("'{}' lies on no walkable floor (navigation grid)", target.name));
+      fields_.emplace_back(blocked_.size(), unreachable);
+      continue;
     }
-    fields_.push_back(dijkstra(sources));
+    fields_.push_back(dijkstra(target.cells));
     const auto& field = fields_.back();
+    bool cut_off = false;
+    for (const auto e : entrances) {
+      const auto& from = targets[e];
+      if (&from == &target || from.cells.empty()) continue;
+      const bool reached = std::any_of(from.cells.begin(), from.cells.end(),
+                                       [&](int c) { return field[c] < unreachable; });
+      if (!reached) {
+        cut_off = true;
+        report(target.element, fmt::format("'{}' cannot be reached on foot from entrance '{}' ({})",
+                                           target.name, from.name, from.element));
+      }
+    }
     const auto reached =
         std::count_if(field.begin(), field.end(), [](float d) { return d < unreachable; });
     // A target cut off from most of the floor means a wall closes a portal by mistake.
-    if (reached * 2 < free_cells) {
-      throw std::invalid_argument(
-          fmt::format("{}: '{}' is reachable from only {} of {} walkable navigation cells",
-                      plan_.source_path, name, reached, free_cells));
+    if (!cut_off && reached * 2 < free_cells) {
+      report(target.element,
+             fmt::format("'{}' is reachable from only {} of {} walkable navigation cells",
+                         target.name, reached, free_cells));
+    }
+  }
+  check_lines(problems);
+  check_portals(problems);
+  if (!problems.empty()) throw config::scenario_error(std::move(problems));
+}
+
+void station::check_lines(std::vector<config::problem>& problems) const {
+  for (std::size_t i = 0; i < counters_.size(); ++i) {
+    const auto& c = *counters_[i];
+    const auto where = i < plan_.ticket_booths.size()
+                           ? fmt::format("ticket_booths[{}]", i)
+                           : fmt::format("vending_machines[{}]", i - plan_.ticket_booths.size());
+    vec2 previous = c.service_point;
+    for (unsigned k = 0; k < c.max_queue_length; ++k) {
+      const vec2 slot = c.service_point + c.queue_direction * c.queue_spacing_m * k;
+      std::string wrong;
+      if (!walkable(slot)) {
+        wrong = "is not on walkable floor";
+      } else if (wall_clearance(slot) < settings_.clearance_m + 0.05) {
+        wrong = "is closer than a body to a wall or obstacle";
+      } else if (!sight_clear(previous, slot)) {
+        wrong = "is cut off from the slot before it by a wall or obstacle";
+      }
+      if (!wrong.empty()) {
+        problems.push_back(
+            {plan_.source_path, 0, 0, where,
+             fmt::format("'{}': slot {} of its line (of max_queue_length {}) at [{}, {}] {}",
+                         c.name, k, c.max_queue_length, slot.x(), slot.y(), wrong)});
+        break;
+      }
+      previous = slot;
+    }
+  }
+}
+
+void station::check_portals(std::vector<config::problem>& problems) const {
+  for (std::size_t i = 0; i < plan_.portals.size(); ++i) {
+    const auto& p = plan_.portals[i];
+    const box& b = p.area;
+    if (p.kind == portal_kind::street) {
+      // A door to the outside has floor that is not walkable (outside every hall, or off the
+      // plan) just beyond one of its sides.
+      constexpr double beyond_m = 0.25;
+      bool at_edge = false;
+      for (int k = 0; k <= 8 && !at_edge; ++k) {
+        const double fx = b.min.x() + (b.max.x() - b.min.x()) * k / 8.0;
+        const double fy = b.min.y() + (b.max.y() - b.min.y()) * k / 8.0;
+        for (const vec2& q : {vec2{fx, b.min.y() - beyond_m}, vec2{fx, b.max.y() + beyond_m},
+                              vec2{b.min.x() - beyond_m, fy}, vec2{b.max.x() + beyond_m, fy}}) {
+          if (!walkable(q)) at_edge = true;
+        }
+      }
+      if (!at_edge) {
+        problems.push_back(
+            {plan_.source_path, 0, 0, fmt::format("portals[{}]", i),
+             fmt::format("street portal '{}' does not touch the edge of the walkable floor "
+                         "(a door to the outside must lie on the boundary)",
+                         p.name)});
+      }
+    } else {
+      int regions = 0;
+      for (const auto& r : plan_.regions) {
+        if (r.kind == region_kind::tracks) continue;
+        if (r.area.min.x() < b.max.x() && b.min.x() < r.area.max.x() &&
+            r.area.min.y() < b.max.y() && b.min.y() < r.area.max.y()) {
+          ++regions;
+        }
+      }
+      if (regions < 2) {
+        problems.push_back(
+            {plan_.source_path, 0, 0, fmt::format("portals[{}]", i),
+             fmt::format("internal portal '{}' overlaps {} walkable region(s); an opening "
+                         "between halls must overlap two",
+                         p.name, regions)});
+      }
     }
   }
 }
@@ -375,40 +531,53 @@ vec2 station::direction_to(int field, const vec2& p) const {
   const double f10 = field_at(field, x0 + 1, y0);
   const double f01 = field_at(field, x0, y0 + 1);
   const double f11 = field_at(field, x0 + 1, y0 + 1);
-  // Only away from walls: a stencil straddling a wall would point through it.
-  auto open_cell = [&](int x, int y) {
-    return x >= 0 && y >= 0 && x < grid_w_ && y < grid_h_ && !near_wall_[y * grid_w_ + x];
+  // Any four finite cells with no wall across the stencil's edges: at any corridor width
+  // (in a 2 m corridor every cell is near a wall) walkers follow the smooth gradient.
+  auto edge_open = [&](int x, int y, int direction) {
+    return (edge_blocked_[y * grid_w_ + x] & (1u << direction)) == 0;
   };
   if (std::isfinite(f00) && std::isfinite(f10) && std::isfinite(f01) && std::isfinite(f11) &&
-      open_cell(x0, y0) && open_cell(x0 + 1, y0) && open_cell(x0, y0 + 1) &&
-      open_cell(x0 + 1, y0 + 1)) {
+      edge_open(x0, y0, 0) && edge_open(x0, y0, 1) && edge_open(x0, y0, 2) &&
+      edge_open(x0 + 1, y0, 2) && edge_open(x0 + 1, y0, 3) && edge_open(x0, y0 + 1, 0)) {
     const vec2 gradient{((f10 - f00) * (1.0 - ty) + (f11 - f01) * ty) / cell,
                         ((f01 - f00) * (1.0 - tx) + (f11 - f10) * tx) / cell};
     const double norm = gradient.norm();
     if (norm > 0.3) return -gradient / norm;
   }
-  // Near walls and at saddles: head for the best cell nearby.
+  // Across walls and at saddles: the slope-weighted mean direction to the visible cells
+  // nearby that lie lower than the field here. Every such cell contributes, so equally good
+  // neighbours (the three ahead in a corridor) balance instead of the first in scan order
+  // winning and pointing the walk into a wall.
   const int c = cell_index(p);
   const int cx = c % grid_w_;
   const int cy = c / grid_w_;
   for (int r = 1; r <= 3; ++r) {
-    const vec2 own_centre{(cx + 0.5) * cell, (cy + 0.5) * cell};
-    double best = line_clear(p, own_centre) ? static_cast<double>(field_at(field, cx, cy))
-                                            : std::numeric_limits<double>::infinity();
-    vec2 best_centre = p;
+    // The field here: the best visible cell plus the straight walk to it.
+    double here = std::numeric_limits<double>::infinity();
     for (int y = cy - r; y <= cy + r; ++y) {
       for (int x = cx - r; x <= cx + r; ++x) {
         const double v = field_at(field, x, y);
+        if (!std::isfinite(v)) continue;
         const vec2 centre{(x + 0.5) * cell, (y + 0.5) * cell};
-        if (v < best && line_clear(p, centre)) {
-          best = v;
-          best_centre = centre;
-        }
+        const double d = (centre - p).norm();
+        if (v + d < here && line_clear(p, centre)) here = v + d;
       }
     }
-    const vec2 to = best_centre - p;
-    if (std::isfinite(best) && to.norm() > 1e-9) return to.normalized();
-    if (std::isfinite(best)) return vec2::Zero();
+    if (!std::isfinite(here)) continue;
+    vec2 sum = vec2::Zero();
+    for (int y = cy - r; y <= cy + r; ++y) {
+      for (int x = cx - r; x <= cx + r; ++x) {
+        const double v = field_at(field, x, y);
+        if (!std::isfinite(v) || v >= here) continue;
+        const vec2 centre{(x + 0.5) * cell, (y + 0.5) * cell};
+        const vec2 to = centre - p;
+        const double d = to.norm();
+        if (d < 1e-9 || !line_clear(p, centre)) continue;
+        const double slope = (here - v) / d;
+        sum += to / d * (slope * slope * slope * slope);
+      }
+    }
+    if (sum.norm() > 1e-12) return sum.normalized();
   }
   return vec2::Zero();
 }

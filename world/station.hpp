@@ -6,6 +6,7 @@
 #include <span>
 #include <vector>
 
+#include "config/scenario_error.hpp"
 #include "world/layout.hpp"
 
 namespace argus::world {
@@ -34,7 +35,8 @@ struct navigation_settings {
   double cell_m = 0.5;
   /// Cells whose centre is closer than this to a wall are blocked.
   double clearance_m = 0.2;
-  /// Extra cost per metre walked within `wall_band_m` of a wall, so routes keep off walls.
+  /// Extra cost per metre walked at a wall, falling linearly to 0 at `wall_band_m` from it, so
+  /// routes keep off walls.
   double wall_penalty = 0.6;
   double wall_band_m = 0.8;
 };
@@ -47,8 +49,16 @@ struct navigation_settings {
 /// route costs a lookup (cf. Shao & Terzopoulos' precomputed path maps, paper ref. [1]).
 class station {
  public:
-  /// Builds everything from `plan`; throws std::invalid_argument naming a target that no
-  /// walkable cell can reach.
+  /// Builds everything from `plan` and checks that it can be walked; throws
+  /// config::scenario_error listing every problem, each naming the layout file, the element
+  /// (`stairs[6]`) and what is wrong:
+  /// - every portal, stairs, counter, bench and meeting point is reachable on foot from every
+  ///   entrance (street portal and stairs), and portals and stairs hold walkable floor inside
+  ///   their box (a pedestrian leaves only inside it);
+  /// - every slot of every counter's line (max_queue_length of them) is on walkable floor,
+  ///   clear of walls, and in sight of the previous one;
+  /// - street portals touch the edge of the walkable floor, internal portals join two
+  ///   regions.
   explicit station(layout plan, navigation_settings settings = {});
 
   /// load_layout + construct, shared for the partitions.
@@ -80,6 +90,9 @@ class station {
   /// solid segment.
   bool line_clear(const vec2& a, const vec2& b) const;
 
+  /// Whether the straight line from `a` to `b`, of any length, crosses no solid segment.
+  bool sight_clear(const vec2& a, const vec2& b) const;
+
   /// Ticket booths then vending machines, numbered together as "counters".
   std::size_t counter_count() const noexcept { return counters_.size(); }
   /// Counter `index` (booths first).
@@ -105,6 +118,14 @@ class station {
   /// The region containing `p` (the first listed), or nullptr.
   const region* region_at(const vec2& p) const;
 
+  /// The speed factor of the region containing `p` (1 outside every region, and everywhere
+  /// when no region sets one).
+  double speed_factor(const vec2& p) const {
+    if (!has_speed_factors_) return 1.0;
+    const region* r = region_at(p);
+    return r != nullptr ? r->speed_factor : 1.0;
+  }
+
   /// Navigation grid geometry (for drawing and tests).
   int grid_width() const noexcept { return grid_w_; }
   int grid_height() const noexcept { return grid_h_; }
@@ -118,6 +139,8 @@ class station {
   void build_segment_index();
   void build_grid();
   void build_fields();
+  void check_lines(std::vector<config::problem>& problems) const;
+  void check_portals(std::vector<config::problem>& problems) const;
   std::vector<float> dijkstra(const std::vector<int>& sources) const;
 
   layout plan_;
@@ -136,10 +159,13 @@ class station {
   int grid_h_ = 0;
   std::vector<std::uint8_t> blocked_;
   std::vector<std::uint8_t> near_wall_;
+  // Cost factor of walking through each cell: 1 in the open, up to 1 + wall_penalty at a wall.
+  std::vector<float> wall_cost_;
   // Bit d set: the grid edge from this cell in direction d (of the 8) crosses a wall.
   std::vector<std::uint8_t> edge_blocked_;
   std::vector<std::vector<float>> fields_;
   std::vector<int> field_base_;  // first field of each target_kind
+  bool has_speed_factors_ = false;
 };
 
 }  // namespace argus::world

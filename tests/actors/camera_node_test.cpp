@@ -251,6 +251,15 @@ CAF_TEST(a partition splits the group and healing merges it by negotiation) {
   CAF_CHECK_EQUAL(leaders.size(), 1u);
 }
 
+CAF_TEST(a task on a pedestrian who is not there is refused as such) {
+  auto s = three_cameras();
+  s.tasks = {task_at_camera_2(99999)};  // an id the crowd has not produced
+  run_cameras(s, 4.0);
+  CAF_CHECK_EQUAL(
+      events("task_refused", R"("pedestrian":99999,"reason":"no_such_pedestrian")").size(), 1u);
+  CAF_CHECK(events("task_created").empty());
+}
+
 CAF_TEST(a task on a pedestrian out of view is refused) {
   auto s = three_cameras();
   s.tasks = {task_at_camera_2(2)};

@@ -60,7 +60,7 @@ TEST(surveillance, the_target_is_observed_by_three_cameras_in_turn) {
   const auto o = run_scenario(station(150.0, "argus_surveil_carry"), false);
   ASSERT_EQ(o.evaluation.tasks.size(), 1u);
   const auto& m = o.evaluation.tasks[0];
-  EXPECT_EQ(m.pedestrian, 12);
+  EXPECT_EQ(m.pedestrian, 24);
   EXPECT_GT(m.time_in_station_s, 100.0);
   EXPECT_GT(m.oracle_bound, 0.9);
   EXPECT_GT(m.coverage, 0.25);
@@ -164,7 +164,7 @@ TEST(surveillance, an_automatic_task_takes_the_first_pedestrian_to_enter) {
 }
 
 TEST(surveillance, the_operator_clicks_on_a_pedestrian_or_on_nobody) {
-  // Where camera 7's tracker holds pedestrian 12 just after the shipped task picks her (10 s).
+  // Where camera 7's tracker holds pedestrian 24 just after the shipped task picks her (10 s).
   const auto by_id = run_scenario(station(11.0, "argus_surveil_click_id"), false);
   std::ifstream tracks(by_id.output_dir / "tracks.csv");
   std::string line;

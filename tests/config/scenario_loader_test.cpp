@@ -204,6 +204,49 @@ TEST(scenario_loader, reads_every_conflict_solver) {
             conflict_solver::bound_solv);
 }
 
+TEST(scenario_loader, reads_speeds_flows_and_measurement_areas) {
+  const auto loaded = parse_scenario(R"(world:
+  speed: {mean_mps: 1.2, sd_mps: 0.1, min_mps: 0.8, max_mps: 1.6}
+  flows:
+    - {name: in, min: [1, 2], max: [3, 4], count: 20, rate_per_s: 2, start: 5 s, exit: east}
+  measurement_areas:
+    - {name: middle, min: [9, 1], max: [13, 5]}
+)",
+                                     "flows.yaml");
+  EXPECT_EQ(loaded.world.speed, (speed_settings{1.2, 0.1, 0.8, 1.6}));
+  ASSERT_EQ(loaded.world.flows.size(), 1u);
+  const auto& flow = loaded.world.flows[0];
+  EXPECT_EQ(flow.name, "in");
+  EXPECT_EQ(flow.spawn, (plan_box{1, 2, 3, 4}));
+  EXPECT_EQ(flow.count, 20u);
+  EXPECT_EQ(flow.rate_per_s, 2.0);
+  EXPECT_EQ(flow.start, seconds{5.0});
+  EXPECT_EQ(flow.exit, "east");
+  ASSERT_EQ(loaded.world.measurement_areas.size(), 1u);
+  EXPECT_EQ(loaded.world.measurement_areas[0].area, (plan_box{9, 1, 13, 5}));
+  // The defaults are Weidmann's.
+  EXPECT_EQ(parse_scenario("", "x.yaml").world.speed, (speed_settings{1.34, 0.26, 0.6, 2.0}));
+}
+
+TEST(scenario_loader, a_flow_needs_a_count_an_exit_and_a_proper_box) {
+  try {
+    parse_scenario(R"(world:
+  speed: {mean_mps: 2.5, max_mps: 2.0}
+  flows:
+    - {name: in, min: [3, 2], max: [1, 4]}
+)",
+                   "flows.yaml");
+    FAIL() << "accepted";
+  } catch (const scenario_error& e) {
+    const std::string text = e.what();
+    EXPECT_NE(text.find("world.speed: expected min_mps <= mean_mps <= max_mps"), std::string::npos)
+        << text;
+    EXPECT_NE(text.find("world.flows[0].max: expected max > min"), std::string::npos) << text;
+    EXPECT_NE(text.find("world.flows[0].count"), std::string::npos) << text;
+    EXPECT_NE(text.find("world.flows[0].exit"), std::string::npos) << text;
+  }
+}
+
 TEST(scenario_loader, loads_the_minimal_scenario) {
   const auto loaded =
       load_scenario(std::filesystem::path{ARGUS_SOURCE_DIR} / "scenarios" / "minimal.yaml");

@@ -52,6 +52,9 @@ struct run_statistics {
   std::size_t min_population = std::numeric_limits<std::size_t>::max();
   std::size_t max_population = 0;
   int left = 0;
+  /// Left by the stairs they had come up (issue 18: never).
+  int back_down_the_same_stairs = 0;
+  int left_by_stairs_after_coming_up = 0;
 };
 
 class crowd_run : public testing::Test {
@@ -88,6 +91,7 @@ class crowd_run : public testing::Test {
     constexpr int window_ticks = 10 * 15;
     std::map<int, progress_window> windows;
     std::map<std::pair<int, int>, std::uint64_t> joined;  // (counter, id) -> join tick
+    std::map<int, int> came_in_by;  // id -> spawned event resource (-1 - stairs for stairs)
     std::map<int, std::pair<std::uint64_t, int>> last_served;
     const int ticks = 10 * 60 * 15;
     for (int k = 0; k < ticks; ++k) {
@@ -153,6 +157,15 @@ class crowd_run : public testing::Test {
             break;
           case event_kind::left:
             ++s.left;
+            if (const auto came = came_in_by.find(e.pedestrian);
+                came != came_in_by.end() && came->second < 0 && e.resource < 0) {
+              ++s.left_by_stairs_after_coming_up;
+              if (came->second == e.resource) ++s.back_down_the_same_stairs;
+            }
+            break;
+          case event_kind::spawned:
+            // Tick 0 is the prefilled crowd (resource -1, not a stairway).
+            if (e.tick > 0) came_in_by[e.pedestrian] = e.resource;
             break;
           case event_kind::joined_queue:
             joined[{e.resource, e.pedestrian}] = e.tick;
@@ -226,6 +239,9 @@ TEST_F(crowd_run, population_is_kept) {
   EXPECT_GE(stats_->min_population, 150u);
   EXPECT_LE(stats_->max_population, 200u);
   EXPECT_GT(stats_->left, 100);
+  // Arriving passengers may take a train again, but never straight back down their stairs.
+  EXPECT_GT(stats_->left_by_stairs_after_coming_up, 0);
+  EXPECT_EQ(stats_->back_down_the_same_stairs, 0);
 }
 
 TEST_F(crowd_run, ticket_lines_form_and_are_served_in_order) {

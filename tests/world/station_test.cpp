@@ -4,6 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <string>
+#include <vector>
+
 #include "world/layout_loader.hpp"
 
 namespace argus::world {
@@ -66,7 +70,112 @@ TEST(station, cut_off_target_is_rejected) {
   // A closed box around the meeting point cuts it off.
   plan.walls.push_back({{{14, 4}, {16, 4}, {16, 6}, {14, 6}, {14, 4}}});
   plan.meeting_points.push_back({"trapped", {15, 5}, 0.5});
-  EXPECT_THROW(station{plan}, std::invalid_argument);
+  EXPECT_THROW(station{plan}, config::scenario_error);
+}
+
+/// A 20 m x 10 m hall with a street door on its west wall, for the layout checks.
+layout small_hall() {
+  layout plan;
+  plan.source_path = "hall.yaml";
+  plan.size_m = {20.0, 10.0};
+  plan.regions.push_back({"hall", region_kind::waiting_room, {{0, 0}, {20, 10}}});
+  plan.portals.push_back({"door", portal_kind::street, {{0, 4}, {1, 6}}});
+  return plan;
+}
+
+/// The problems station{plan} reports, as "field: message" lines.
+std::vector<std::string> problems_of(const layout& plan) {
+  try {
+    station built{plan};
+  } catch (const config::scenario_error& e) {
+    std::vector<std::string> out;
+    for (const auto& p : e.problems()) {
+      EXPECT_EQ(p.file, "hall.yaml");
+      out.push_back(p.field + ": " + p.message);
+    }
+    return out;
+  }
+  return {};
+}
+
+bool mentions(const std::vector<std::string>& problems, const std::string& text) {
+  return std::any_of(problems.begin(), problems.end(),
+                     [&](const std::string& p) { return p.find(text) != std::string::npos; });
+}
+
+TEST(station, the_shipped_layout_passes_every_check) {
+  EXPECT_TRUE(problems_of([] {
+                auto plan = load_layout(builtin_layout_path());
+                plan.source_path = "hall.yaml";
+                return plan;
+              }())
+                  .empty());
+}
+
+TEST(station, stairs_behind_a_wall_are_unreachable_from_the_entrance) {
+  auto plan = small_hall();
+  // A wall right across the hall at x = 15 shuts the stairs in the east end away.
+  plan.walls.push_back({{{15, 0}, {15, 10}}});
+  plan.stairways.push_back({"platform", {{17, 4}, {19, 6}}});
+  const auto problems = problems_of(plan);
+  EXPECT_TRUE(mentions(problems,
+                       "stairs[0]: 'platform' cannot be reached on foot from "
+                       "entrance 'door' (portals[0])"))
+      << ::testing::PrintToString(problems);
+}
+
+TEST(station, stairs_with_no_floor_inside_are_rejected) {
+  auto plan = small_hall();
+  plan.size_m = {30.0, 10.0};
+  // Just outside the hall: the target would snap to the hall's nearest cell, but nobody
+  // would ever stand inside the box to leave.
+  plan.stairways.push_back({"platform", {{20.5, 4}, {22, 6}}});
+  const auto problems = problems_of(plan);
+  EXPECT_TRUE(mentions(problems, "stairs[0]: 'platform' has no walkable floor inside its box"))
+      << ::testing::PrintToString(problems);
+}
+
+TEST(station, a_line_through_an_obstacle_is_rejected) {
+  auto plan = small_hall();
+  service_counter machine;
+  machine.name = "ticket_machine";
+  machine.footprint = {{10, 9}, {11, 10}};
+  machine.service_point = {10.5, 8.4};
+  machine.queue_direction = {0, -1};
+  machine.max_queue_length = 8;
+  plan.vending_machines.push_back(machine);
+  // A kiosk 3 m down the line.
+  plan.obstacles.push_back({"kiosk", {{9, 4}, {12, 4}, {12, 6}, {9, 6}}});
+  const auto problems = problems_of(plan);
+  EXPECT_TRUE(mentions(problems, "vending_machines[0]: 'ticket_machine': slot 3 of its line"))
+      << ::testing::PrintToString(problems);
+}
+
+TEST(station, a_street_door_inside_the_hall_is_rejected) {
+  auto plan = small_hall();
+  plan.portals.push_back({"middle", portal_kind::street, {{9, 4}, {11, 6}}});
+  plan.portals.push_back({"nowhere", portal_kind::internal, {{14, 4}, {15, 6}}});
+  const auto problems = problems_of(plan);
+  EXPECT_TRUE(mentions(problems, "portals[1]: street portal 'middle' does not touch the edge"))
+      << ::testing::PrintToString(problems);
+  EXPECT_TRUE(mentions(problems, "portals[2]: internal portal 'nowhere' overlaps 1 walkable"))
+      << ::testing::PrintToString(problems);
+  EXPECT_FALSE(mentions(problems, "portals[0]"));
+}
+
+TEST(station, the_walk_along_a_narrow_corridor_points_along_it) {
+  // A corridor 2 m wide: every cell is near a wall; the descent must not lean into one.
+  layout plan;
+  plan.size_m = {30.0, 4.0};
+  plan.walls.push_back({{{1, 1}, {29, 1}, {29, 3}, {1, 3}, {1, 1}}});
+  plan.regions.push_back({"corridor", region_kind::other, {{1, 1}, {29, 3}}});
+  plan.portals.push_back({"end", portal_kind::street, {{28.5, 1}, {29, 3}}});
+  const station corridor{plan};
+  const int field = corridor.target(target_kind::portal, 0);
+  for (double x = 3.0; x < 26.0; x += 0.37) {
+    const vec2 way = corridor.direction_to(field, {x, 2.0});
+    EXPECT_GT(way.x(), 0.97) << x;  // within 14 degrees of straight along
+  }
 }
 
 }  // namespace

@@ -1,0 +1,162 @@
+// The crowd against the field's reference data (issue 18): the fundamental diagram (speed and
+// specific flow against density, measured with the classic method in a corridor, beside
+// Weidmann's curve) and the specific flow through a bottleneck against its width (beside
+// the range the experiments measured). Prints tables and draws them in a PNG.
+//
+//   fundamental_diagram [OUT.png]      (default fundamental_diagram.png)
+
+#include "tests/world/fundamental_diagram.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+#include <string>
+#include <vector>
+
+#include "report/drawing.hpp"
+#include "tests/world/experiment.hpp"
+#include "world/experiment_layouts.hpp"
+
+namespace {
+
+using namespace argus;
+using world::testing::diagram_point;
+
+/// Specific flow through an exit `width_m` wide: 150 people leave a 10 m x 10 m room; the
+/// flow between the 10th and the 90th percentile of their crossings, over the width.
+double bottleneck_specific_flow(double width_m, std::uint64_t seed) {
+  world::crowd_settings settings;
+  settings.population = 0;
+  settings.prefill = false;
+  settings.run_seed = seed;
+  world::flow occupants;
+  occupants.spawn_area = world::bottleneck_room_area();
+  occupants.count = 150;
+  occupants.exit_portal = 0;
+  settings.flows.push_back(occupants);
+  world::testing::experiment room(world::bottleneck_room_layout(width_m), settings);
+  world::testing::line_counter exit_line(11.2);
+  room.run(400.0,
+           [&](const world::snapshot& b, const world::snapshot& n) { exit_line.look(b, n); });
+  return exit_line.flow_per_s() / width_m;
+}
+
+/// A plot panel: data ranges mapped onto a rectangle of the image.
+struct panel {
+  cv::Rect box;
+  double x_max;
+  double y_max;
+  cv::Point at(double x, double y) const {
+    return {box.x + static_cast<int>(x / x_max * box.width),
+            box.y + box.height - static_cast<int>(y / y_max * box.height)};
+  }
+  void axes(cv::Mat& image, const std::string& title, const std::string& x_label,
+            const std::string& y_label, double x_step, double y_step) const {
+    cv::rectangle(image, box, report::ink, 1);
+    for (double x = 0.0; x <= x_max + 1e-9; x += x_step) {
+      cv::line(image, at(x, 0), at(x, 0) + cv::Point(0, 4), report::ink);
+      report::draw_text(image, fmt::format("{:g}", x), at(x, 0) + cv::Point(-8, 18), 0.38);
+    }
+    for (double y = 0.0; y <= y_max + 1e-9; y += y_step) {
+      cv::line(image, at(0, y), at(0, y) - cv::Point(4, 0), report::ink);
+      report::draw_text(image, fmt::format("{:g}", y), at(0, y) + cv::Point(-34, 5), 0.38);
+    }
+    report::draw_text(image, title, {box.x, box.y - 10}, 0.5);
+    report::draw_text(image, x_label, {box.x + box.width / 2 - 60, box.y + box.height + 38}, 0.42);
+    report::draw_text(image, y_label, {box.x - 40, box.y - 26}, 0.42);
+  }
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::string out = argc > 1 ? argv[1] : "fundamental_diagram.png";
+  std::vector<diagram_point> block;
+  std::printf(
+      "Fundamental diagram, block of people in a corridor 4 m wide (classic method, "
+      "area 4 m x 4 m, t = 2-6 s)\n");
+  std::printf("%10s %12s %10s %12s %14s\n", "target", "density", "speed", "Weidmann", "flow");
+  for (const double density : {0.25, 0.5, 0.75, 1.0, 1.25, 1.5, 1.75, 2.0}) {
+    for (std::uint64_t seed = 1; seed <= 2; ++seed) {
+      const auto p = world::testing::block_point(density, seed);
+      block.push_back(p);
+      std::printf("%10.2f %12.2f %10.2f %12.2f %14.2f\n", density, p.density_per_m2, p.speed_mps,
+                  world::testing::weidmann_speed_mps(p.density_per_m2), p.specific_flow_per_m_s);
+    }
+  }
+  const auto jam = world::testing::jam_points();
+  std::printf("\nJam in front of a 1 m exit (rimea_04_fundamental_diagram), by density bin\n");
+  std::printf("%12s %8s %10s %12s %14s\n", "density", "points", "speed", "Weidmann", "flow");
+  for (int bin = 0; bin < 6; ++bin) {
+    double speed = 0.0;
+    double flow = 0.0;
+    int count = 0;
+    for (const auto& p : jam) {
+      if (p.density_per_m2 >= bin && p.density_per_m2 < bin + 1) {
+        speed += p.speed_mps;
+        flow += p.specific_flow_per_m_s;
+        ++count;
+      }
+    }
+    if (count == 0) continue;
+    std::printf("%5d - %4d %8d %10.2f %12.2f %14.2f\n", bin, bin + 1, count, speed / count,
+                world::testing::weidmann_speed_mps(bin + 0.5), flow / count);
+  }
+  std::printf("\nBottleneck: 150 people leave a 10 m x 10 m room by an exit 1 m long\n");
+  std::printf("%10s %22s %22s\n", "width (m)", "specific flow seed 1", "specific flow seed 2");
+  std::vector<std::pair<double, double>> bottleneck;
+  for (const double width : {0.8, 1.0, 1.2, 1.6, 2.0, 2.4}) {
+    const double a = bottleneck_specific_flow(width, 1);
+    const double b = bottleneck_specific_flow(width, 2);
+    bottleneck.push_back({width, a});
+    bottleneck.push_back({width, b});
+    std::printf("%10.1f %22.2f %22.2f\n", width, a, b);
+  }
+
+  cv::Mat image(480, 1500, CV_8UC3, cv::Scalar(255, 255, 255));
+  const cv::Scalar reference(60, 60, 220);  // red: published
+  const cv::Scalar ours(200, 110, 30);      // blue: Argus, free branch
+  const cv::Scalar jammed(60, 160, 60);     // green: Argus, jam
+  const panel speed{{70, 60, 400, 340}, 6.0, 1.6};
+  speed.axes(image, "Speed against density", "density (1/m^2)", "speed (m/s)", 1.0, 0.2);
+  const panel flow{{560, 60, 400, 340}, 6.0, 2.0};
+  flow.axes(image, "Specific flow against density", "density (1/m^2)", "flow (1/(m s))", 1.0, 0.5);
+  const panel width{{1050, 60, 400, 340}, 3.0, 2.5};
+  width.axes(image, "Bottleneck: specific flow against width", "width (m)", "flow (1/(m s))", 0.5,
+             0.5);
+  for (double rho = 0.05; rho < 5.4; rho += 0.05) {
+    const double next = rho + 0.05;
+    cv::line(image, speed.at(rho, world::testing::weidmann_speed_mps(rho)),
+             speed.at(next, world::testing::weidmann_speed_mps(next)), reference, 2);
+    cv::line(image, flow.at(rho, rho * world::testing::weidmann_speed_mps(rho)),
+             flow.at(next, next * world::testing::weidmann_speed_mps(next)), reference, 2);
+  }
+  for (const auto& p : jam) {
+    cv::circle(image, speed.at(p.density_per_m2, p.speed_mps), 2, jammed, cv::FILLED);
+    cv::circle(image, flow.at(p.density_per_m2, p.specific_flow_per_m_s), 2, jammed, cv::FILLED);
+  }
+  for (const auto& p : block) {
+    cv::circle(image, speed.at(p.density_per_m2, p.speed_mps), 4, ours, cv::FILLED);
+    cv::circle(image, flow.at(p.density_per_m2, p.specific_flow_per_m_s), 4, ours, cv::FILLED);
+  }
+  // The experiments' range: about 1.2-1.9 /(m s) for exits 0.8-2.5 m wide (Kretz et al. 2006,
+  // Seyfried et al. 2009, Mueller 1981), drawn as a band, not as their individual points.
+  cv::rectangle(image, width.at(0.8, 1.9), width.at(2.5, 1.2), cv::Scalar(200, 200, 250),
+                cv::FILLED);
+  cv::rectangle(image, width.at(0.8, 1.9), width.at(2.5, 1.2), reference, 1);
+  for (const auto& [w, j] : bottleneck) cv::circle(image, width.at(w, j), 5, ours, cv::FILLED);
+  report::draw_text(image, "red: Weidmann (1993) / published bottleneck range", {70, 460}, 0.45,
+                    reference);
+  report::draw_text(image, "blue: Argus, block in a corridor; bottleneck (2 seeds)", {560, 460},
+                    0.45, ours);
+  report::draw_text(image, "green: Argus, jam before a 1 m exit", {1050, 460}, 0.45, jammed);
+  if (!cv::imwrite(out, image)) {
+    std::fprintf(stderr, "fundamental_diagram: cannot write %s\n", out.c_str());
+    return 1;
+  }
+  std::printf("\nwritten %s\n", out.c_str());
+  return 0;
+}
