@@ -9,7 +9,9 @@
 #include "config/scenario_error.hpp"
 #include "config/scenario_loader.hpp"
 #include "config/whole_file.hpp"
+#include "world/crowd.hpp"
 #include "world/layout_loader.hpp"
+#include "world/station.hpp"
 
 namespace argus::apps {
 namespace {
@@ -36,12 +38,15 @@ int generate(const generate_options& o) {
   plan.name = scenario_file.stem().string();
   const auto files = generate_station(plan, layout_name);
   try {
+    if (!scenario_file.parent_path().empty())
+      std::filesystem::create_directories(scenario_file.parent_path());
     config::write_whole_file(layout_file, [&](std::ostream& s) { s << files.layout_yaml; });
     config::write_whole_file(scenario_file, [&](std::ostream& s) { s << files.scenario_yaml; });
     // What was written must load: a generator that writes a station no command can run is a
     // bug, not bad input.
-    world::load_layout(layout_file);
-    config::load_scenario(scenario_file);
+    const auto scenario = config::load_scenario(scenario_file);
+    const auto station = world::station::load(world::layout_path(scenario));
+    (void)world::crowd_settings::from(scenario).spawning(*station);
   } catch (const config::scenario_error& e) {
     std::cerr << "argus generate station: the generated files do not load:\n" << e.what() << '\n';
     return run_failed;

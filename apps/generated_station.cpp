@@ -11,7 +11,6 @@ constexpr double hall_width_m = 100.0;
 constexpr double hall_depth_m = 60.0;
 constexpr double tracks_m = 10.0;  // the strip west of the halls, behind the stairs
 constexpr double opening_m = 8.0;  // between halls
-constexpr double outer_m = 0.5;    // the outer walls stand this far inside the plan
 
 struct writer {
   std::string text;
@@ -39,16 +38,17 @@ std::string layout_of(const station_plan& p) {
   w.line("name: {}_layout", p.name);
   w.line("size_m: [{}, {}]", width, depth);
   w.line("walls:");
-  w.wall(tracks_m, outer_m, width, outer_m);
-  w.wall(tracks_m, depth - outer_m, width, depth - outer_m);
-  w.wall(tracks_m, outer_m, tracks_m, depth - outer_m);
-  w.wall(width, outer_m, width, depth - outer_m);
+  // The outer walls stand on the edge of the floor, where the street doors are.
+  w.wall(tracks_m, 0.0, width, 0.0);
+  w.wall(tracks_m, depth, width, depth);
+  w.wall(tracks_m, 0.0, tracks_m, depth);
+  w.wall(width, 0.0, width, depth);
   for (unsigned i = 1; i < nx; ++i)
     for (unsigned j = 0; j < ny; ++j) {
       const double x = hall_x(i);
       const double mid = hall_y(j) + hall_depth_m / 2.0;
-      w.wall(x, std::max(hall_y(j), outer_m), x, mid - opening_m / 2.0);
-      w.wall(x, mid + opening_m / 2.0, x, std::min(hall_y(j + 1), depth - outer_m));
+      w.wall(x, hall_y(j), x, mid - opening_m / 2.0);
+      w.wall(x, mid + opening_m / 2.0, x, hall_y(j + 1));
     }
   for (unsigned j = 1; j < ny; ++j)
     for (unsigned i = 0; i < nx; ++i) {
@@ -78,10 +78,10 @@ std::string layout_of(const station_plan& p) {
   w.line("portals:");
   for (unsigned i = 0; i < nx; ++i) {
     const double mid = hall_x(i) + hall_width_m / 2.0;
-    w.line("  - {{name: south_door_{}, kind: street, min: [{}, {}], max: [{}, 2]}}", i, mid - 3.0,
-           outer_m, mid + 3.0);
+    w.line("  - {{name: south_door_{}, kind: street, min: [{}, 0], max: [{}, 1.5]}}", i, mid - 3.0,
+           mid + 3.0);
     w.line("  - {{name: north_door_{}, kind: street, min: [{}, {}], max: [{}, {}]}}", i, mid - 3.0,
-           depth - 2.0, mid + 3.0, depth - outer_m);
+           depth - 1.5, mid + 3.0, depth);
   }
   for (unsigned i = 1; i < nx; ++i)
     for (unsigned j = 0; j < ny; ++j) {
