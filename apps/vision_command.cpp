@@ -89,6 +89,10 @@ struct calibrate_arguments {
   // (7 is the paper's); --scale-divisor alone means the paper's, as before --scales existed.
   std::optional<std::string> scales;
   std::optional<double> scale_divisor;
+  // Seeds pooled: the first (--seed, or the scenario's) and the next seeds - 1.
+  int seeds = 1;
+  // Fit on undegraded frames (each camera's imaging model left out but for its size).
+  bool raw = false;
   std::string out;
 };
 
@@ -130,39 +134,46 @@ int calibrate(const calibrate_arguments& args) {
     const std::int64_t first = ticks_of(*start_s);
     const std::int64_t last = first + ticks_of(*duration_s);
     const std::int64_t stride = std::max<std::int64_t>(1, ticks_of(*every_s));
-    world::crowd crowd(station, world::crowd_settings::from(scenario));
-    vision::renderer renderer(station);
-    struct camera_run {
-      vision::camera_view view;
-      vision::imaging_model imaging;
-    };
-    std::vector<camera_run> cameras;
-    for (const auto& c : scenario.cameras) {
-      if (static_cast<int>(cameras.size()) >= args.cameras) break;
-      config::imaging_model imaging = c.imaging;
-      imaging.width_px = static_cast<unsigned>(args.width);
-      imaging.height_px = static_cast<unsigned>(args.height);
-      auto pose = vision::ptz_camera::from(c).state();
-      if (args.field_of_view_deg) pose.field_of_view_deg = *args.field_of_view_deg;
-      cameras.push_back({{vision::camera_placement::from(c), pose, args.width, args.height},
-                         vision::imaging_model::for_camera(imaging, scenario.run.seed, c.id)});
-    }
+    // Several seeds pool their trials: one crowd's density and look-alikes move the pixel
+    // pipeline's miss rate by several points from one seed to the next.
     std::vector<vision::calibration_trial> trials;
-    for (std::int64_t tick = 0; tick <= last; ++tick) {
-      if (tick > 0) crowd.step();
-      if (tick < first || (tick - first) % stride != 0) continue;
-      const double t = static_cast<double>(tick) * tick_s;
-      const auto& frame = *crowd.current();
-      for (auto& camera : cameras) {
-        cv::Mat image = renderer.render(camera.view, frame, t);
-        image =
-            camera.imaging.interlaced()
-                ? camera.imaging.apply(image, renderer.render(camera.view, frame, t + tick_s / 2.0))
-                : camera.imaging.apply(image);
-        auto more = vision::pixel_trials(image, frame, *station, camera.view, 0.4, kernels);
-        trials.insert(trials.end(), more.begin(), more.end());
+    const std::uint64_t first_seed = scenario.run.seed;
+    for (int k = 0; k < args.seeds; ++k) {
+      scenario.run.seed = first_seed + static_cast<std::uint64_t>(k);
+      world::crowd crowd(station, world::crowd_settings::from(scenario));
+      vision::renderer renderer(station);
+      struct camera_run {
+        vision::camera_view view;
+        vision::imaging_model imaging;
+      };
+      std::vector<camera_run> cameras;
+      for (const auto& c : scenario.cameras) {
+        if (static_cast<int>(cameras.size()) >= args.cameras) break;
+        config::imaging_model imaging = args.raw ? config::imaging_model{} : c.imaging;
+        imaging.width_px = static_cast<unsigned>(args.width);
+        imaging.height_px = static_cast<unsigned>(args.height);
+        auto pose = vision::ptz_camera::from(c).state();
+        if (args.field_of_view_deg) pose.field_of_view_deg = *args.field_of_view_deg;
+        cameras.push_back({{vision::camera_placement::from(c), pose, args.width, args.height},
+                           vision::imaging_model::for_camera(imaging, scenario.run.seed, c.id)});
+      }
+      for (std::int64_t tick = 0; tick <= last; ++tick) {
+        if (tick > 0) crowd.step();
+        if (tick < first || (tick - first) % stride != 0) continue;
+        const double t = static_cast<double>(tick) * tick_s;
+        const auto& frame = *crowd.current();
+        for (auto& camera : cameras) {
+          cv::Mat image = renderer.render(camera.view, frame, t);
+          image = camera.imaging.interlaced()
+                      ? camera.imaging.apply(image,
+                                             renderer.render(camera.view, frame, t + tick_s / 2.0))
+                      : camera.imaging.apply(image);
+          auto more = vision::pixel_trials(image, frame, *station, camera.view, 0.4, kernels);
+          trials.insert(trials.end(), more.begin(), more.end());
+        }
       }
     }
+    scenario.run.seed = first_seed;
     const auto model = vision::fit_sensor_model(trials);
     const auto rates = vision::rates_of(trials);
     std::cerr << vision::describe(trials);
@@ -176,16 +187,19 @@ int calibrate(const calibrate_arguments& args) {
     out << fmt::format(
         "# Emulated sensor error model (vision/sensor_model.hpp), fitted by:\n"
         "#   argus vision calibrate {} --start '{}' --duration '{}' --every '{}' --cameras {} "
-        "--width {} --height {}{}{} --scales {}{} --out {}\n"
+        "--width {} --height {}{}{}{} --scales {}{}{} --out {}\n"
         "# {} trials: miss rate {:.3f}, confusion rate {:.3f} (pixel pipeline)\n",
         args.scenario, args.start, args.duration, args.every, args.cameras, args.width, args.height,
         args.seed ? fmt::format(" --seed {}", *args.seed) : "",
+        args.seeds > 1 ? fmt::format(" --seeds {}", args.seeds) : "",
         args.field_of_view_deg ? fmt::format(" --field-of-view {}", *args.field_of_view_deg) : "",
         scales, args.scale_divisor ? fmt::format(" --scale-divisor {}", *args.scale_divisor) : "",
-        args.out, rates.trials, rates.miss, rates.confusion);
+        args.raw ? " --raw" : "", args.out, rates.trials, rates.miss, rates.confusion);
     out << vision::to_yaml(model);
-    std::cout << fmt::format("{}: {} cameras, {} trials; model written to {}\n", scenario.name,
-                             cameras.size(), rates.trials, args.out);
+    std::cout << fmt::format("{}: {} cameras, {} seeds, {} trials; model written to {}\n",
+                             scenario.name,
+                             std::min<std::size_t>(args.cameras, scenario.cameras.size()),
+                             args.seeds, rates.trials, args.out);
   } catch (const std::exception& e) {
     std::cerr << "argus vision calibrate: " << e.what() << '\n';
     return run_failed;
@@ -252,6 +266,12 @@ void add_vision_command(CLI::App& app, int& result) {
                   "With --scales paper: D (default 7, the paper's; larger for small "
                   "pedestrians)")
       ->check(number_in(1.0, 1000.0));
+  fit->add_option("--seeds", calibration->seeds,
+                  "Pool this many runs: the seed and the ones after it (default 1)")
+      ->check(integer_in(1, 1000));
+  fit->add_flag("--raw", calibration->raw,
+                "Fit on undegraded frames: skip each camera's imaging model (colour response, "
+                "noise, dropout, JPEG, interlacing)");
   fit->add_option("--out", calibration->out, "Model file to write (YAML)")->required();
   fit->callback([calibration, &result] { result = calibrate(*calibration); });
 }

@@ -1,11 +1,12 @@
 // The shipped emulated sensor model (scenarios/sensor_model.yaml, fitted by `argus vision
-// calibrate` on penn_station, seed of the scenario, t = 30..270 s, all 16 cameras zoomed to
-// a 20 degree field of view at 320 x 240, kernels paper_scales(h, 28)) against the pixel
-// pipeline on a held-out run: another seed and another time window (t = 100..160 s), same
-// cameras, zoom and kernels. Tolerances: miss rate within 0.07, confusion rate within 0.08.
-// The model sees occlusion and height only; what it does not see (how crowded, how alike the
-// people in view are) moves the pixel pipeline's miss rate by about 0.05 from one window to
-// another (0.52 in the calibration window, 0.58 in this one, emulated 0.53).
+// calibrate` on penn_station, seeds 1-4, t = 30..270 s, all 16 cameras zoomed to a 20 degree
+// field of view at 320 x 240 on undegraded frames, kernels paper_scales(h, 28)) against the
+// pixel pipeline on held-out runs: three other seeds and another time window
+// (t = 100..160 s), same cameras, zoom and kernels. Tolerances: miss rate within 0.07,
+// confusion rate within 0.08. The model sees occlusion and height only; what it does not see
+// (how crowded, how alike the people in view are) moves the pixel pipeline's miss rate from
+// one seed to the next (0.50 to 0.58 over full windows of seeds 1-4 and 1001 with issue 18's
+// crowd), so both the fit and this check pool several seeds.
 #include <gtest/gtest.h>
 
 #include "config/scenario_loader.hpp"
@@ -24,17 +25,14 @@ constexpr double field_of_view_deg = 20.0;
 const scale_settings kernels{scale_rule::paper, 28.0};
 constexpr std::size_t cameras = 16;
 
-TEST(emulated_sensor_fidelity, rates_match_the_pixel_pipeline_on_a_held_out_run) {
-  auto scenario = config::load_scenario(ARGUS_SOURCE_DIR "/scenarios/penn_station.yaml");
-  const auto model = load_sensor_model(ARGUS_SOURCE_DIR "/scenarios/sensor_model.yaml");
-  ASSERT_GT(model.samples, 1000);
-  scenario.run.seed += 1000;  // held out: not the calibration's seed
+// One held-out run's trials, the pixel pipeline's and the emulated sensor's, on the same frames.
+void add_trials(const config::scenario& scenario, const sensor_model& model,
+                std::vector<calibration_trial>& pixels, std::vector<calibration_trial>& emulated) {
   const auto station = world::station::load(world::layout_path(scenario));
   world::crowd crowd(station, world::crowd_settings::from(scenario));
   renderer render(station);
   const double tick_s = scenario.run.tick.count();
   const auto ticks_of = [&](double s) { return static_cast<int>(std::lround(s / tick_s)); };
-  std::vector<calibration_trial> pixels, emulated;
   std::vector<camera_view> views;
   std::vector<imaging_model> imaging;
   std::vector<emulated_sensor> sensors;
@@ -68,14 +66,25 @@ TEST(emulated_sensor_fidelity, rates_match_the_pixel_pipeline_on_a_held_out_run)
       emulated.insert(emulated.end(), e.begin(), e.end());
     }
   }
+}
+
+TEST(emulated_sensor_fidelity, rates_match_the_pixel_pipeline_on_a_held_out_run) {
+  const auto model = load_sensor_model(ARGUS_SOURCE_DIR "/scenarios/sensor_model.yaml");
+  ASSERT_GT(model.samples, 1000);
+  std::vector<calibration_trial> pixels, emulated;
+  for (std::uint64_t held_out = 1001; held_out <= 1003; ++held_out) {  // not the fit's seeds
+    auto scenario = config::load_scenario(ARGUS_SOURCE_DIR "/scenarios/penn_station.yaml");
+    scenario.run.seed = held_out;
+    add_trials(scenario, model, pixels, emulated);
+  }
   const auto truth = rates_of(pixels);
   const auto emulation = rates_of(emulated);
   ASSERT_GT(truth.trials, 500);
   EXPECT_EQ(truth.trials, emulation.trials);
   EXPECT_NEAR(emulation.miss, truth.miss, 0.07);
   // What the pixel pipeline measures here: it misses a little over half the visible
-  // pedestrians (0.58 in this window), far fewer than the 0.97 it missed at the default wide
-  // poses with the paper's kernels, and it finds some: the bounds hold 0.58 with room for the
+  // pedestrians (0.55 over these three windows), far fewer than the 0.97 it missed at the default
+  // wide poses with the paper's kernels, and it finds some: the bounds hold 0.55 with room for the
   // window-to-window spread above, and fail for a pipeline that finds nearly everyone or
   // nearly no one.
   EXPECT_GT(truth.miss, 0.45);
