@@ -2,10 +2,12 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <memory>
 
 #include "actors/run_result.hpp"
 #include "config/scenario.hpp"
 #include "eval/metrics.hpp"
+#include "live/session.hpp"
 
 namespace argus::actors {
 
@@ -32,6 +34,9 @@ struct run_options {
   /// Also write the run in MOTChallenge format to `<output dir>/mot` (ground truth of every
   /// camera's every frame: a visibility pass per camera per frame).
   bool mot = false;
+  /// A live run (argus serve): the operator's commands come in through it, its pacing replaces
+  /// `run.speed`, and the run shows itself on its console. Null for none.
+  std::shared_ptr<live::session> live;
 };
 
 /// Runs a validated scenario to its end on a CAF scheduler with `scenario.run.threads` worker
