@@ -179,11 +179,12 @@ void console_server::routes() {
     reply_json(res, {{"speed", session_->pace.speed()}, {"paused", session_->pace.paused()}});
   });
   svr.set_error_handler([](const httplib::Request& req, httplib::Response& res) {
-    if (!res.body.empty()) return;
+    if (!res.body.empty()) return;  // a route's own error
+    const char* what = res.status == 404   ? "not found"
+                       : res.status == 413 ? "request body too large (at most 16 KiB)"
+                                           : "bad request";
     res.set_content(
-        nlohmann::json{{"error", fmt::format("{} {}: {}", req.method, req.path,
-                                             res.status == 404 ? "not found" : "bad request")}}
-            .dump(),
+        nlohmann::json{{"error", fmt::format("{} {}: {}", req.method, req.path, what)}}.dump(),
         "application/json");
   });
 }

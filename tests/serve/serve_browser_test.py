@@ -71,6 +71,7 @@ def main(argus, scenario, out):
 
         # A click on a pedestrian in a feed: pause, pick a camera that sees someone, click her.
         camera, x, y = serve.pause_on_someone()
+        known = {t["task"] for t in serve.state()["tasks"]}
         wait.until(lambda d: d.find_element(By.ID, "run-state").text == "paused")
         Select(driver.find_element(By.ID, "camera")).select_by_value(str(camera))
         seen = frames(driver)
@@ -86,10 +87,14 @@ def main(argus, scenario, out):
         driver.find_element(By.ID, "pause").click()
         wait.until(lambda d: d.find_element(By.ID, "run-state").text == "running")
 
+        # The tables are redrawn with every message: read them in one script, not element by
+        # element (an element may be gone by the next call).
         def task_row(d):
-            for row in d.find_elements(By.CSS_SELECTOR, "#tasks tr"):
-                cells = [c.text for c in row.find_elements(By.TAG_NAME, "td")]
-                if cells and cells[1] == str(camera) and cells[0] != "0":
+            rows = d.execute_script(
+                "return [...document.querySelectorAll('#tasks tr')]"
+                ".map(r => [...r.cells].map(c => c.textContent))")
+            for cells in rows:
+                if cells and cells[1] == str(camera) and int(cells[0]) not in known:
                     return cells
             return None
         wait.until(lambda d: task_row(d) and task_row(d)[3] != "issued")
@@ -102,8 +107,9 @@ def main(argus, scenario, out):
                       if c["alive"] and c["id"] != camera)
         Select(driver.find_element(By.ID, "camera")).select_by_value(str(victim))
         driver.find_element(By.ID, "crash").click()
-        wait.until(lambda d: "dead" in (d.find_element(
-            By.CSS_SELECTOR, "#cameras tr[data-camera='%d']" % victim).get_attribute("class") or ""))
+        wait.until(lambda d: d.execute_script(
+            "const r = document.querySelector(\"#cameras tr[data-camera='%d']\");"
+            "return r !== null && r.className === 'dead'" % victim))
         fps = driver.find_element(By.ID, "feed-fps").text
         print("page: camera %d crashed; feed at %s frames/s" % (victim, fps))
 

@@ -24,7 +24,8 @@ class Serve:
     def request(self, method, path, body=None, raw=None, timeout=10):
         """(status, parsed JSON or bytes) of one request."""
         data = raw if raw is not None else (None if body is None else json.dumps(body).encode())
-        req = urllib.request.Request(self.url + path, data=data, method=method)
+        req = urllib.request.Request(self.url + path, data=data, method=method,
+                                     headers={"Content-Type": "application/json"})
         try:
             with urllib.request.urlopen(req, timeout=timeout) as res:
                 status, payload, kind = res.status, res.read(), res.headers["Content-Type"]
