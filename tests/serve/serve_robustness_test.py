@@ -18,9 +18,13 @@ import time
 from serve_session import Serve
 
 
-def fuzzed_bodies(rng):
+def fuzzed_bodies(rng, cameras):
     """Requests that must all be refused: malformed JSON, unknown commands, cameras, links,
-    pixels outside the frame, wrong types."""
+    pixels outside the frame, wrong types. `cameras`: /plan.json's."""
+    for cam in cameras:  # one pixel past each edge of each camera's frame
+        w, h = cam["width_px"], cam["height_px"]
+        for x, y in ((w, 0), (0, h), (-1, 0), (0, -0.5), (w + 0.5, h)):
+            yield json.dumps({"command": "task", "camera": cam["id"], "pixel": [x, y]}).encode()
     yield b""
     yield b"{"
     yield b"\xff\xfe\x00garbage"
@@ -100,7 +104,8 @@ def main(argus, scenario, out):
     try:
         serve.wait_tick(5)
         refused = 0
-        for body in fuzzed_bodies(rng):
+        cameras = serve.request("GET", "/plan.json")[1]["cameras"]
+        for body in fuzzed_bodies(rng, cameras):
             if is_valid(serve.url, body):
                 continue
             status, reply = serve.request("POST", "/command", raw=body)
