@@ -3,7 +3,9 @@
   run      `argus run`                       (no server)
   serve    `argus serve`, nobody watching    (the server and the console's publishing)
   browser  `argus serve` with the page open in headless Chromium (live stream, plan, one feed)
-and the frames per second the feed reached in the browser. Repeats each `--repeats` times.
+and the frames per second the feed reached in the browser. Repeats each `--repeats` times, in
+rotating order; reports wall time (the simulation's speed) and the argus process's CPU time
+(user + system: its cost, less sensitive than wall time to other load on the machine).
 
   /usr/bin/python3 bench/serve_bench.py build/apps/argus scenarios/minimal.yaml \
       [--duration '40 s'] [--repeats 3] [--camera 1] [--speed 0]
@@ -25,10 +27,13 @@ WALL = re.compile(r"simulated in ([0-9.]+) s wall")
 
 
 def run_plain(args, out):
-    text = subprocess.run([args.argus, "run", args.scenario, "--duration", args.duration,
-                           "--speed", args.speed, "--out", out, "--threads", "2",
-                           "--no-progress"], check=True, capture_output=True, text=True).stdout
-    return float(WALL.search(text).group(1))
+    process = subprocess.Popen([args.argus, "run", args.scenario, "--duration", args.duration,
+                                "--speed", args.speed, "--out", out, "--threads", "2",
+                                "--no-progress"], stdout=subprocess.PIPE, text=True)
+    _, status, usage = os.wait4(process.pid, 0)
+    assert os.waitstatus_to_exitcode(status) == 0
+    text = process.stdout.read()
+    return float(WALL.search(text).group(1)), usage.ru_utime + usage.ru_stime
 
 
 def run_served(args, out, with_browser):
@@ -50,11 +55,11 @@ def run_served(args, out, with_browser):
                                       options=options)
             driver.get(serve.url + "/")
             Select(driver.find_element("id", "camera")).select_by_value(args.camera)
-            while serve.process.poll() is None:
+            while serve.running():
                 frames = driver.execute_script(
                     "return Number(document.getElementById('feed').dataset.frames || 0)")
                 time.sleep(2.0)
-                if serve.process.poll() is None:
+                if serve.running():
                     now = driver.execute_script(
                         "return Number(document.getElementById('feed').dataset.frames || 0)")
                     fps.append((now - frames) / 2.0)
@@ -63,7 +68,7 @@ def run_served(args, out, with_browser):
         if driver:
             driver.quit()
         serve.kill()
-    return float(WALL.search(text).group(1)), fps
+    return float(WALL.search(text).group(1)), serve.cpu_seconds, fps
 
 
 def main():
@@ -77,22 +82,31 @@ def main():
     args = p.parse_args()
     work = tempfile.mkdtemp(prefix="serve_bench_")
     walls = {"run": [], "serve": [], "browser": []}
+    cpus = {"run": [], "serve": [], "browser": []}
     fps = []
     for i in range(args.repeats):
-        walls["run"].append(run_plain(args, os.path.join(work, "run%d" % i)))
-        walls["serve"].append(run_served(args, os.path.join(work, "serve%d" % i), False)[0])
-        wall, rates = run_served(args, os.path.join(work, "browser%d" % i), True)
-        walls["browser"].append(wall)
-        fps += rates
-        print("repeat %d: run %.2f s, serve %.2f s, browser %.2f s wall" % (
-            i, walls["run"][-1], walls["serve"][-1], walls["browser"][-1]), flush=True)
-    base = statistics.median(walls["run"])
-    print("| way | wall s (median of %d) | vs run |" % args.repeats)
-    print("| --- | --- | --- |")
-    for way, values in walls.items():
-        m = statistics.median(values)
-        print("| %s | %.2f (%s) | %+.1f%% |" % (way, m, ", ".join("%.2f" % v for v in values),
-                                               100.0 * (m / base - 1.0)))
+        # The order rotates, so that no way always runs after the browser has just quit.
+        order = ["run", "serve", "browser"][i % 3:] + ["run", "serve", "browser"][:i % 3]
+        for way in order:
+            out = os.path.join(work, "%s%d" % (way, i))
+            if way == "run":
+                wall, cpu = run_plain(args, out)
+            else:
+                wall, cpu, rates = run_served(args, out, way == "browser")
+                fps += rates
+            walls[way].append(wall)
+            cpus[way].append(cpu)
+        print("repeat %d: %s" % (i, ", ".join("%s %.2f s wall %.2f s CPU" % (
+            w, walls[w][-1], cpus[w][-1]) for w in walls)), flush=True)
+    base_wall = statistics.median(walls["run"])
+    base_cpu = statistics.median(cpus["run"])
+    print("| way | wall s, median of %d | vs run | argus CPU s, median | vs run |" % args.repeats)
+    print("| --- | --- | --- | --- | --- |")
+    for way in walls:
+        w = statistics.median(walls[way])
+        c = statistics.median(cpus[way])
+        print("| %s | %.2f | %+.1f%% | %.2f | %+.1f%% |" % (
+            way, w, 100.0 * (w / base_wall - 1.0), c, 100.0 * (c / base_cpu - 1.0)))
     if fps:
         print("feed in the browser: median %.1f frames/s, min %.1f, max %.1f (%d samples of 2 s)" % (
             statistics.median(fps), min(fps), max(fps), len(fps)))

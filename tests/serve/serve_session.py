@@ -1,5 +1,6 @@
 """Starts `argus serve` and talks to it over HTTP (the live console's tests)."""
 import json
+import os
 import subprocess
 import time
 import urllib.error
@@ -98,9 +99,25 @@ class Serve:
             time.sleep(0.05)
         raise AssertionError("no new task was issued")
 
+    def running(self):
+        """Whether the process still runs (without reaping it: finish() reads its CPU time)."""
+        info = os.waitid(os.P_PID, self.process.pid, os.WEXITED | os.WNOHANG | os.WNOWAIT)
+        return info is None
+
     def finish(self, timeout=300):
-        """Waits for the run's end; returns the process's stdout."""
-        out, err = self.process.communicate(timeout=timeout)
+        """Waits for the run's end; returns the process's stdout. Its CPU seconds (user +
+        system) are then in `cpu_seconds`."""
+        deadline = time.time() + timeout
+        while True:
+            pid, status, usage = os.wait4(self.process.pid, os.WNOHANG)
+            if pid != 0:
+                break
+            if time.time() > deadline:
+                raise AssertionError("argus serve did not end within %d s" % timeout)
+            time.sleep(0.05)
+        self.process.returncode = os.waitstatus_to_exitcode(status)
+        self.cpu_seconds = usage.ru_utime + usage.ru_stime
+        out, err = self.process.stdout.read(), self.process.stderr.read()
         if self.process.returncode != 0:
             raise AssertionError("argus serve exit %d\n%s" % (self.process.returncode, err))
         return out
