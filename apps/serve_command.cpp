@@ -64,6 +64,7 @@ int serve(const serve_arguments& args) {
     std::cout << fmt::format("argus serve: http://{}:{}/", args.bind, server.port()) << std::endl;
     actors::run_options options;
     options.live = session;
+    options.station = station;
     auto outcome = actors::run_scenario(scenario, options);
     const auto commands = session->log.commands();
     config::write_whole_file(outcome.output_dir / "commands.yaml", [&](std::ostream& out) {

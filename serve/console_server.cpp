@@ -25,6 +25,13 @@ void reply_json(httplib::Response& res, const nlohmann::json& j, int status = 20
   res.set_header("Cache-Control", "no-store");
 }
 
+// The plan as the page shows it: no labels (the page draws its own).
+world::plan_view_options plan_options() {
+  world::plan_view_options options;
+  options.labels = false;
+  return options;
+}
+
 // The plan's static part and how to draw on it: metres to the PNG's pixels.
 std::string plan_description(const config::scenario& scenario, const world::station& where,
                              const world::plan_view_options& options) {
@@ -56,11 +63,7 @@ console_server::console_server(const config::scenario& scenario,
       session_(std::move(session)),
       feeds_(std::make_unique<feed_renderer>(scenario_, station_)),
       server_(std::make_unique<httplib::Server>()) {
-  world::plan_view_options options;
-  options.labels = false;
-  const auto png = world::render_plan_view(*station_, {}, nullptr, nullptr, options);
-  plan_png_.assign(png.begin(), png.end());
-  plan_json_ = plan_description(scenario_, *station_, options);
+  plan_json_ = plan_description(scenario_, *station_, plan_options());
 }
 
 console_server::~console_server() {
@@ -73,6 +76,10 @@ void console_server::routes() {
     res.set_content(std::string(console_page), "text/html; charset=utf-8");
   });
   svr.Get("/plan.png", [this](const httplib::Request&, httplib::Response& res) {
+    std::call_once(plan_drawn_, [this] {
+      const auto png = world::render_plan_view(*station_, {}, nullptr, nullptr, plan_options());
+      plan_png_.assign(png.begin(), png.end());
+    });
     res.set_content(plan_png_, "image/png");
   });
   svr.Get("/plan.json", [this](const httplib::Request&, httplib::Response& res) {

@@ -2,6 +2,7 @@
 
 #include <atomic>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <thread>
 
@@ -39,8 +40,7 @@ struct server_settings {
 /// Bad requests get HTTP 400 with {"error": "..."} and change nothing.
 class console_server {
  public:
-  /// Serves `session` for the run of `scenario` in `where`. Throws std::runtime_error when no
-  /// EGL device works for the feeds.
+  /// Serves `session` for the run of `scenario` in `where`.
   console_server(const config::scenario& scenario, std::shared_ptr<const world::station> where,
                  std::shared_ptr<live::session> session);
   ~console_server();
@@ -66,6 +66,7 @@ class console_server {
   std::unique_ptr<feed_renderer> feeds_;
   std::unique_ptr<httplib::Server> server_;
   server_settings settings_;
+  std::once_flag plan_drawn_;  // the plan is drawn when first asked for
   std::string plan_png_;
   std::string plan_json_;
   std::thread thread_;

@@ -24,7 +24,7 @@ std::vector<unsigned char> encode(const cv::Mat& image) {
 
 feed_renderer::feed_renderer(const config::scenario& scenario,
                              std::shared_ptr<const world::station> where)
-    : station_(where), renderer_(std::move(where)), tick_seconds_(scenario.run.tick.count()) {
+    : station_(std::move(where)), tick_seconds_(scenario.run.tick.count()) {
   for (const auto& c : scenario.cameras) {
     cameras_.emplace(c.id, c);
     imaging_.emplace(c.id, vision::imaging_model::for_camera(
@@ -48,7 +48,8 @@ std::optional<feed_image> feed_renderer::frame(int camera, const live::console_s
   const auto camera_view = view_of(camera, *view);
   std::lock_guard<std::mutex> guard(mutex_);
   const double time_s = snap->time().count();
-  cv::Mat image = renderer_.render(camera_view, *snap, time_s);
+  if (!renderer_) renderer_.emplace(station_);
+  cv::Mat image = renderer_->render(camera_view, *snap, time_s);
   image = imaging_.at(camera).apply(image);
   return feed_image{encode(image), static_cast<std::int64_t>(snap->tick()), "display"};
 }

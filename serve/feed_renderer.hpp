@@ -35,11 +35,12 @@ struct feed_image {
 /// has shown the last, so frames are dropped, never queued.
 class feed_renderer {
  public:
-  /// For `scenario`'s cameras in `where`. Throws std::runtime_error when no EGL device works.
+  /// For `scenario`'s cameras in `where`. Its renderer (an EGL context) is made when it first
+  /// renders: a console nobody watches costs no context.
   feed_renderer(const config::scenario& scenario, std::shared_ptr<const world::station> where);
 
   /// Camera `camera`'s current feed, or nothing for an unknown camera, a crashed one, or before
-  /// the first snapshot.
+  /// the first snapshot. Throws std::runtime_error when it must render and no EGL device works.
   std::optional<feed_image> frame(int camera, const live::console_state& console);
 
   /// The pedestrians in camera `camera`'s view at the latest snapshot, by ground truth: id and
@@ -55,7 +56,7 @@ class feed_renderer {
   std::mutex mutex_;
   std::map<int, config::camera_settings> cameras_;
   std::map<int, vision::imaging_model> imaging_;
-  vision::renderer renderer_;
+  std::optional<vision::renderer> renderer_;
   double tick_seconds_ = 1.0 / 15.0;
 };
 
