@@ -1,5 +1,6 @@
 #include "actors/camera_node.hpp"
 
+#include <algorithm>
 #include <optional>
 #include <vector>
 
@@ -70,6 +71,8 @@ struct camera_node_state {
   std::vector<controller::look_request> looks;  // asked for by the controller's last step
   std::vector<due_task> tasks;
   std::size_t next_task = 0;
+  // How far this node has read the operator board (live runs).
+  std::size_t operator_cursor = 0;
   std::int64_t first_turn = -1;
   // Operator cancellations for tasks issued through this camera: (tick, task), by tick.
   std::vector<std::pair<std::int64_t, protocol::task_id>> cancels;
@@ -123,8 +126,12 @@ void flush_network(node_actor* self, tick_context& ctx) {
   auto& st = self->state;
   // One batch per link per turn, however many network messages it carries.
   std::map<int, std::vector<protocol::net_message>> by_link;
-  for (auto& out : st.network->take_outgoing())
+  std::uint64_t sent = 0;
+  for (auto& out : st.network->take_outgoing()) {
     by_link[out.neighbour].push_back(std::move(out.message));
+    ++sent;
+  }
+  if (sent > 0 && st.world && st.world->console) st.world->console->add_traffic(sent, 0);
   for (auto& [neighbour, batch] : by_link) {
     auto it = st.links.find(neighbour);
     if (it == st.links.end()) continue;
@@ -342,6 +349,22 @@ void follow_oracle(camera_node_state& st, const world::snapshot* snap, const cv:
   st.looks.push_back({task, sig->second});
 }
 
+// The operator's live orders for this node (argus serve), merged where the scenario's own
+// would be: a replayed run has them from its `tasks`, sorted the same way (by tick, then task).
+void take_operator_orders(camera_node_state& st) {
+  for (auto& order : st.world->operators->take_new(st.operator_cursor, st.camera_id)) {
+    if (order.cancel) {
+      const std::pair<std::int64_t, protocol::task_id> cancel{order.tick, order.task};
+      st.cancels.insert(std::upper_bound(st.cancels.begin(), st.cancels.end(), cancel), cancel);
+      continue;
+    }
+    const auto at =
+        std::upper_bound(st.tasks.begin(), st.tasks.end(), order.tick,
+                         [](std::int64_t tick, const due_task& t) { return tick < t.tick; });
+    st.tasks.insert(at, due_task{order.tick, order.task, std::move(order.request)});
+  }
+}
+
 caf::behavior& behaviour_for(camera_node_state& st) {
   switch (st.controller->state()) {
     case controller::node_state::idle:
@@ -370,6 +393,11 @@ void finish_turn(node_actor* self, const cv::Mat& image) {
   record_frame(st);
   st.eval_snap.reset();
   st.input.pose = st.head->state();
+  // The live console's copy of what the node saw (display only: nothing comes back).
+  std::vector<cv::Rect2d> boxes;
+  if (st.world && st.world->console)
+    for (const auto& look : st.input.looks)
+      if (look.found) boxes.push_back(look.box);
   auto out = st.controller->step(st.input);
   st.input = {};
   for (auto& m : out.messages) {
@@ -385,6 +413,11 @@ void finish_turn(node_actor* self, const cv::Mat& image) {
     st.looks = std::move(out.looks);
   }
   st.head->step(st.tick_length);
+  if (st.world && st.world->console) {
+    const auto pose = st.head->state();
+    st.world->console->publish_camera(st.camera_id, ctx.tick(), pose.pan_deg, pose.tilt_deg,
+                                      pose.field_of_view_deg, image, std::move(boxes));
+  }
   st.network->tick(ctx.tick());
   flush_network(self, ctx);
   self->send(st.clock, std::move(*st.ctx).finish());
@@ -404,9 +437,12 @@ void take_turn(node_actor* self, std::int64_t tick, std::uint8_t p, const caf::a
     ctx.emit("node_up",
              fmt::format(R"("camera":{},"type":"{}")", st.camera_id, st.ptz ? "ptz" : "static"));
   }
+  std::uint64_t received = 0;
   st.arrivals.for_each_due(tick, p, [&](const mail_stamp&, int from, protocol::net_message& m) {
     st.network->receive(tick, from, m);
+    ++received;
   });
+  if (received > 0 && st.world && st.world->console) st.world->console->add_traffic(0, received);
   st.input.tick = tick;
   for (auto& m : st.network->take_delivered()) {
     if (auto decoded = protocol::decode(m.kind.name(), m.body)) {
@@ -429,6 +465,7 @@ void take_turn(node_actor* self, std::int64_t tick, std::uint8_t p, const caf::a
     ctx.emit("net_sent", fmt::format(R"("camera":{},"destination":{},"message":"{}","id":{})",
                                      st.camera_id, o.destination, o.kind, id));
   }
+  if (st.world && st.world->operators) take_operator_orders(st);
   // Tasks the operator gave while this camera was down are lost with it.
   for (; st.next_task < st.tasks.size() && st.tasks[st.next_task].tick <= tick; ++st.next_task)
     if (st.tasks[st.next_task].tick >= st.first_turn) st.queries.push_back(st.tasks[st.next_task]);

@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <map>
 
+#include "actors/operator_board.hpp"
 #include "actors/oracle_board.hpp"
 #include "actors/participant_info.hpp"
 #include "actors/snapshot_board.hpp"
@@ -10,6 +11,7 @@
 #include "caf/fwd.hpp"
 #include "config/scenario.hpp"
 #include "eval/observation_log.hpp"
+#include "live/console_state.hpp"
 #include "vision/sensor_model.hpp"
 #include "world/station.hpp"
 
@@ -38,6 +40,11 @@ struct camera_world {
   std::shared_ptr<eval::observation_log> log;
   /// The central oracle's orders (control_strategy::oracle only).
   std::shared_ptr<oracle_board> oracle;
+  /// The operator's live tasks and cancellations (argus serve); null for none.
+  std::shared_ptr<operator_board> operators;
+  /// Where nodes show the live console their pose, frame and traffic (display only; null for
+  /// none).
+  std::shared_ptr<live::console_state> console;
 };
 
 /// How camera `camera` takes part in the clock: phase cameras, every tick (it senses each frame).

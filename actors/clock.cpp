@@ -79,7 +79,10 @@ class clock_actor : public caf::event_based_actor {
           return promise_;
         },
         [this](tick_ack& ack) { on_ack(ack); },
-        [this](advance_atom) { begin_tick(); },
+        [this](advance_atom) {
+          if (settings_.pacing && !live_tick_due()) return;
+          begin_tick();
+        },
         [this](recorded_atom, std::int64_t) {
           --unwritten_batches_;
           if (waiting_for_recorder_ && unwritten_batches_ < settings_.recorder_window) {
@@ -314,7 +317,40 @@ class clock_actor : public caf::event_based_actor {
     pace();
   }
 
+  // A live run's pace: the operator may change the speed or pause at any time, so the next
+  // tick's due time is measured from the tick at which the setting last changed, and a long
+  // wait is cut into short ones that look at the setting again.
+  bool live_tick_due() {
+    const auto& pacing = *settings_.pacing;
+    const auto now = clock().now();
+    const auto generation = pacing.generation();
+    const bool paused = pacing.paused();
+    if (generation != anchor_generation_ || paused) {
+      anchor_generation_ = generation;
+      anchor_wall_ = now;
+      anchor_tick_ = tick_;
+    }
+    constexpr auto recheck = std::chrono::milliseconds(50);
+    if (paused) {
+      delayed_send(this, recheck, advance_atom_v);
+      return false;
+    }
+    const double speed = pacing.speed();
+    if (speed <= 0.0) return true;
+    const auto due =
+        anchor_wall_ +
+        std::chrono::duration_cast<caf::timespan>(std::chrono::duration<double>(
+            static_cast<double>(tick_ - anchor_tick_) * settings_.tick_seconds / speed));
+    if (due <= now) return true;
+    delayed_send(this, std::min<caf::timespan>(due - now, recheck), advance_atom_v);
+    return false;
+  }
+
   void pace() {
+    if (settings_.pacing) {
+      send(this, advance_atom_v);  // live_tick_due() waits
+      return;
+    }
     if (settings_.speed <= 0.0) {
       send(this, advance_atom_v);
       return;
@@ -466,6 +502,10 @@ class clock_actor : public caf::event_based_actor {
   std::size_t unwritten_batches_ = 0;
   bool waiting_for_recorder_ = false;
   caf::actor_clock::time_point wall_start_;
+  // Live pacing: the wall time and tick from which the current setting is measured.
+  std::uint64_t anchor_generation_ = ~std::uint64_t{0};
+  caf::actor_clock::time_point anchor_wall_;
+  std::int64_t anchor_tick_ = 0;
   caf::actor_clock::time_point last_progress_;
 };
 

@@ -3,9 +3,11 @@
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 
 #include "actors/scheduling_order.hpp"
 #include "caf/fwd.hpp"
+#include "live/pacing.hpp"
 
 namespace argus::actors {
 
@@ -21,6 +23,9 @@ struct clock_settings {
   std::size_t recorder_window = 16;
   /// How often (wall time) the progress observer hears from the clock.
   std::chrono::milliseconds progress_interval{250};
+  /// The operator's pacing of a live run (argus serve), read between ticks instead of `speed`:
+  /// its speed and pause. Null for none. Pacing only delays ticks; it never changes the run.
+  std::shared_ptr<live::pacing> pacing;
   /// Runs the clock on a thread of its own rather than on the scheduler's workers
   /// (clock_on_own_thread() says when that pays).
   bool own_thread = false;

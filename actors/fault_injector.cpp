@@ -46,6 +46,7 @@ struct injector_state {
   std::size_t answers_pending = 0;
   std::int64_t tick = 0;
   std::optional<tick_ack> held_ack;
+  std::shared_ptr<live::session> live;
 };
 
 using injector = caf::stateful_actor<injector_state>;
@@ -130,7 +131,7 @@ bool recover(injector* self, int camera) {
 void perform(injector* self, tick_context& ctx, const planned& p) {
   auto& st = self->state;
   const auto& f = st.scenario.faults[p.fault];
-  if (p.recovery) {
+  if (p.recovery || f.kind == config::fault_kind::recover) {
     bool applied = recover(self, f.camera);
     ctx.emit("node_recovered", fmt::format(R"("camera":{},"applied":{})", f.camera, applied));
     return;
@@ -157,6 +158,8 @@ void perform(injector* self, tick_context& ctx, const planned& p) {
       cmd.until_tick = ctx.tick() + config::to_ticks(f.length, st.scenario.run.tick);
       tell_links(self, f.camera, cmd);
       break;
+    case config::fault_kind::recover:
+      break;  // above
   }
   auto peer = f.peer ? fmt::format(R"(,"peer":{})", *f.peer) : std::string{};
   ctx.emit("fault", fmt::format(R"("fault":"{}","camera":{}{},"random":false,"applied":{})",
@@ -176,6 +179,39 @@ void random_failures(injector* self, tick_context& ctx) {
   }
 }
 
+// The operator's fault commands that came in since the last turn, carried out now as faults
+// of the scenario at this tick (live::apply_commands makes the same ones for a replay).
+void take_live_commands(injector* self, tick_context& ctx) {
+  auto& st = self->state;
+  for (const auto& c : st.live->queue.take(/*tasks=*/false)) {
+    config::fault f;
+    f.at = config::to_seconds(ctx.tick(), st.scenario.run.tick);
+    f.camera = c.camera;
+    switch (c.kind) {
+      case live::command_kind::crash:
+        f.kind = config::fault_kind::crash;
+        break;
+      case live::command_kind::recover:
+        f.kind = config::fault_kind::recover;
+        break;
+      case live::command_kind::cut:
+        f.kind = config::fault_kind::link_cut;
+        f.peer = c.peer;
+        break;
+      case live::command_kind::heal:
+        f.kind = config::fault_kind::link_heal;
+        f.peer = c.peer;
+        break;
+      case live::command_kind::task:
+      case live::command_kind::cancel:
+        continue;  // the scenario script's
+    }
+    st.scenario.faults.push_back(f);
+    perform(self, ctx, planned{ctx.tick(), st.scenario.faults.size() - 1, false});
+    st.live->log.add({ctx.tick(), c});
+  }
+}
+
 std::vector<planned> make_plan(const config::scenario& s) {
   std::vector<planned> out;
   for (std::size_t i = 0; i < s.faults.size(); ++i) {
@@ -190,9 +226,10 @@ std::vector<planned> make_plan(const config::scenario& s) {
 }
 
 caf::behavior fault_injector(injector* self, config::scenario scenario, caf::actor clock,
-                             network_directory net) {
+                             network_directory net, std::shared_ptr<live::session> live) {
   auto& st = self->state;
-  st.info = fault_injector_participant(scenario);
+  st.live = std::move(live);
+  st.info = fault_injector_participant(scenario, st.live != nullptr);
   st.plan = make_plan(scenario);
   st.rng.seed(config::derive_seed(scenario.run.seed, st.info.id));
   // Table 2's failure probability is read per second of virtual time (docs/network.md).
@@ -213,6 +250,7 @@ caf::behavior fault_injector(injector* self, config::scenario scenario, caf::act
         tick_context ctx(st.info.id, st.info.name, tick, st.info.tick_phase);
         while (st.next < st.plan.size() && st.plan[st.next].tick <= tick)
           perform(self, ctx, st.plan[st.next++]);
+        if (st.live) take_live_commands(self, ctx);
         random_failures(self, ctx);
         if (st.next < st.plan.size()) ctx.wake_at(st.plan[st.next].tick);
         st.held_ack = std::move(ctx).finish();
@@ -228,19 +266,21 @@ caf::error crash_reason() {
   return caf::error{1, caf::atom("crash")};
 }
 
-participant_info fault_injector_participant(const config::scenario& scenario) {
+participant_info fault_injector_participant(const config::scenario& scenario, bool live) {
   participant_info info;
   info.id = participant_ids::fault_injector;
   info.name = "faults";
   info.tick_phase = phase::faults;
-  info.mode = scenario.network.node_failure_probability > 0.0 ? wake_mode::every_tick
-                                                              : wake_mode::on_demand;
+  info.mode = scenario.network.node_failure_probability > 0.0 || live ? wake_mode::every_tick
+                                                                      : wake_mode::on_demand;
   return info;
 }
 
 caf::actor spawn_fault_injector(caf::actor_system& system, const config::scenario& scenario,
-                                caf::actor clock, network_directory directory) {
-  return system.spawn(fault_injector, scenario, std::move(clock), std::move(directory));
+                                caf::actor clock, network_directory directory,
+                                std::shared_ptr<live::session> live) {
+  return system.spawn(fault_injector, scenario, std::move(clock), std::move(directory),
+                      std::move(live));
 }
 
 }  // namespace argus::actors

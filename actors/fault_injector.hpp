@@ -7,6 +7,7 @@
 #include "actors/participant_info.hpp"
 #include "caf/fwd.hpp"
 #include "config/scenario.hpp"
+#include "live/session.hpp"
 
 namespace argus::actors {
 
@@ -24,8 +25,9 @@ struct network_directory {
 caf::error crash_reason();
 
 /// How the fault injector takes part in the clock: phase faults; every tick when random node
-/// failures are on, else woken at its next scheduled fault.
-participant_info fault_injector_participant(const config::scenario& scenario);
+/// failures are on or the run is live (`live`: it takes the operator's commands), else woken at
+/// its next scheduled fault.
+participant_info fault_injector_participant(const config::scenario& scenario, bool live = false);
 
 /// Spawns the fault injector (docs/network.md). At each scheduled fault's time, and at random
 /// with `network.node_failure_probability` per node per second of virtual time, it:
@@ -36,13 +38,21 @@ participant_info fault_injector_participant(const config::scenario& scenario);
 /// - `crash_and_recover`: the same, then after `length` spawns a fresh, empty-handed camera
 ///   actor, joins it to the clock and attaches it to its links (`node_recovered`);
 /// - `link_cut` / `link_heal`: cuts or heals the link between `camera` and `peer`;
-/// - `loss_burst`: sets every link of `camera` to `loss_probability` for `length`.
+/// - `loss_burst`: sets every link of `camera` to `loss_probability` for `length`;
+/// - `recover`: the second half of a crash_and_recover on its own (`node_recovered`).
 /// Every action is logged as a `fault` event. Commands to links are requests, sent in the
 /// order they were made once the turn's crashed cameras have ended, and the injector's
 /// acknowledgement waits for every answer: a link's effects on the nodes (hand-overs,
 /// retractions) are then in their mailboxes before their turn. Camera nodes are told nothing:
 /// they learn of failures only through silence (node_network).
+///
+/// In a live run (`live` given) it takes the operator's crash, recover, cut and heal commands
+/// from `live->queue` at the start of each turn: each becomes a fault of the scenario at this
+/// tick (as `live::apply_commands` makes it for a replay), carried out after the scheduled
+/// faults of the tick and before the random ones — where a replay carries it out — and
+/// recorded in `live->log`.
 caf::actor spawn_fault_injector(caf::actor_system& system, const config::scenario& scenario,
-                                caf::actor clock, network_directory directory);
+                                caf::actor clock, network_directory directory,
+                                std::shared_ptr<live::session> live = nullptr);
 
 }  // namespace argus::actors

@@ -110,6 +110,7 @@ caf::behavior recorder(caf::stateful_actor<recorder_state>* self, recorder_setti
       [self](record_atom, std::int64_t tick,
              const std::vector<sim_event>& batch) -> caf::result<recorded_atom, std::int64_t> {
         for (const auto& ev : batch) write_event(self->state, ev);
+        if (self->state.settings.observer) self->state.settings.observer(batch);
         return {recorded_atom_v, tick};
       },
       [self](done_atom, run_result& result) -> caf::result<run_result> {

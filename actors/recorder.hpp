@@ -2,8 +2,11 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <string>
+#include <vector>
 
+#include "actors/sim_event.hpp"
 #include "caf/fwd.hpp"
 
 namespace argus::actors {
@@ -16,6 +19,9 @@ struct recorder_settings {
   double tick_seconds = 1.0 / 15.0;
   unsigned threads = 0;
   double speed = 0.0;
+  /// Also hands each batch, once written, to this (the live console; display only). Empty for
+  /// none.
+  std::function<void(const std::vector<sim_event>&)> observer;
 };
 
 /// Spawns the recorder: it writes `output_dir/events.jsonl`, one JSON object per event,

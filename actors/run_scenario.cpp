@@ -8,6 +8,7 @@
 #include "actors/clock.hpp"
 #include "actors/fault_injector.hpp"
 #include "actors/network_assembly.hpp"
+#include "actors/operator_board.hpp"
 #include "actors/participant_ids.hpp"
 #include "actors/progress_printer.hpp"
 #include "actors/recorder.hpp"
@@ -22,6 +23,7 @@
 #include "eval/metrics.hpp"
 #include "eval/mot_export.hpp"
 #include "eval/run_files.hpp"
+#include "live/command_log.hpp"
 #include "nlohmann/json.hpp"
 #include "protocol/topology.hpp"
 #include "world/layout_loader.hpp"
@@ -83,7 +85,8 @@ run_outcome run_scenario(const config::scenario& scenario, const run_options& op
   const auto end_tick = config::to_ticks(scenario.run.duration, scenario.run.tick);
   caf::actor video_participant;
   world_run_settings world_settings;
-  world_settings.station = world::station::load(world::layout_path(scenario));
+  world_settings.station =
+      options.station ? options.station : world::station::load(world::layout_path(scenario));
   // Kept for the evaluation: world_settings goes to the world actors.
   const auto station = world_settings.station;
   render_pool pool;
@@ -103,6 +106,15 @@ run_outcome run_scenario(const config::scenario& scenario, const run_options& op
   if (scenario.controller.strategy == config::control_strategy::oracle)
     cameras_world->oracle = std::make_shared<oracle_board>(scenario, world_settings.station, log);
   world_settings.board = cameras_world->board;
+  const auto& live = options.live;
+  std::shared_ptr<operator_board> operators;
+  if (live) {
+    // The session outlives the run (the caller holds it): the aliases keep it alive regardless.
+    operators = std::make_shared<operator_board>();
+    cameras_world->operators = operators;
+    cameras_world->console = std::shared_ptr<live::console_state>(live, &live->console);
+    cameras_world->board->show_on(cameras_world->console);
+  }
   if (options.video) {
     video_settings vs;
     vs.file = outcome.output_dir / "video" / "feeds.avi";
@@ -131,6 +143,13 @@ run_outcome run_scenario(const config::scenario& scenario, const run_options& op
   rec.tick_seconds = tick_seconds;
   rec.threads = threads;
   rec.speed = scenario.run.speed;
+  if (live)
+    rec.observer = [live](const std::vector<sim_event>& batch) {
+      std::vector<live::event_line> lines;
+      lines.reserve(batch.size());
+      for (const auto& ev : batch) lines.push_back({ev.tick, ev.source, ev.kind, ev.fields_json});
+      live->console.record_events(lines);
+    };
   auto recorder = spawn_recorder(system, rec);
 
   caf::actor progress;
@@ -140,6 +159,7 @@ run_outcome run_scenario(const config::scenario& scenario, const run_options& op
   cs.end_tick = end_tick;
   cs.tick_seconds = tick_seconds;
   cs.speed = scenario.run.speed;
+  if (live) cs.pacing = std::shared_ptr<live::pacing>(live, &live->pace);
   const protocol::topology topo(scenario);
   // Links are never ticked: the clock's round trips are the cameras'.
   cs.own_thread = clock_on_own_thread(threads, scenario.cameras.size());
@@ -148,10 +168,10 @@ run_outcome run_scenario(const config::scenario& scenario, const run_options& op
   // Joins and link attachments go out from this thread, in this order, before `start`:
   // enqueued in program order, they all reach their receivers before the first tick.
   auto net = spawn_network(system, scenario, topo, clock, std::move(cameras_world));
-  auto script = spawn_scenario_script(system, scenario, clock, log);
-  caf::anon_send(clock, join_atom_v, script, script_participant());
-  auto faults = spawn_fault_injector(system, scenario, clock, std::move(net));
-  caf::anon_send(clock, join_atom_v, faults, fault_injector_participant(scenario));
+  auto script = spawn_scenario_script(system, scenario, clock, log, live, operators);
+  caf::anon_send(clock, join_atom_v, script, script_participant(live != nullptr));
+  auto faults = spawn_fault_injector(system, scenario, clock, std::move(net), live);
+  caf::anon_send(clock, join_atom_v, faults, fault_injector_participant(scenario, live != nullptr));
   world_settings.crowd = world::crowd_settings::from(scenario);
   if (video_participant)
     caf::anon_send(clock, join_atom_v, video_participant, video_recorder_participant());
@@ -175,7 +195,11 @@ run_outcome run_scenario(const config::scenario& scenario, const run_options& op
     caf::anon_send_exit(recorder, caf::exit_reason::user_shutdown);
     throw std::runtime_error("run failed: " + failure);
   }
-  evaluate_run(scenario, *station, log->take(), end_tick, options, outcome);
+  if (live) live->console.finished();
+  // A live run is evaluated as its replay is: with the operator's commands in the scenario.
+  auto evaluated = scenario;
+  if (live) live::apply_commands(evaluated, live->log.commands());
+  evaluate_run(evaluated, *station, log->take(), end_tick, options, outcome);
   return outcome;
 }
 

@@ -2,10 +2,13 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <memory>
 
 #include "actors/run_result.hpp"
 #include "config/scenario.hpp"
 #include "eval/metrics.hpp"
+#include "live/session.hpp"
+#include "world/station.hpp"
 
 namespace argus::actors {
 
@@ -32,6 +35,11 @@ struct run_options {
   /// Also write the run in MOTChallenge format to `<output dir>/mot` (ground truth of every
   /// camera's every frame: a visibility pass per camera per frame).
   bool mot = false;
+  /// A live run (argus serve): the operator's commands come in through it, its pacing replaces
+  /// `run.speed`, and the run shows itself on its console. Null for none.
+  std::shared_ptr<live::session> live;
+  /// The scenario's station when the caller has loaded it already (argus serve); null: load it.
+  std::shared_ptr<const world::station> station;
 };
 
 /// Runs a validated scenario to its end on a CAF scheduler with `scenario.run.threads` worker

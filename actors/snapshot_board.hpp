@@ -4,6 +4,7 @@
 #include <mutex>
 
 #include "eval/observation_log.hpp"
+#include "live/console_state.hpp"
 #include "world/snapshot.hpp"
 
 namespace argus::actors {
@@ -22,11 +23,14 @@ class snapshot_board {
   /// evaluated.
   void publish(std::shared_ptr<const world::snapshot> frame) {
     if (log_) sample_targets(*log_, *frame);
+    if (console_) console_->publish_snapshot(frame);
     std::lock_guard<std::mutex> guard(mutex_);
     latest_ = std::move(frame);
   }
   /// Where publications record the targets' true states (before the run starts).
   void record_targets_in(std::shared_ptr<eval::observation_log> log) { log_ = std::move(log); }
+  /// Where publications also go to be shown live (argus serve; before the run starts).
+  void show_on(std::shared_ptr<live::console_state> console) { console_ = std::move(console); }
   /// The latest snapshot (phase cameras); null before the first.
   std::shared_ptr<const world::snapshot> latest() const {
     std::lock_guard<std::mutex> guard(mutex_);
@@ -50,6 +54,7 @@ class snapshot_board {
   }
 
   std::shared_ptr<eval::observation_log> log_;
+  std::shared_ptr<live::console_state> console_;
   mutable std::mutex mutex_;
   std::shared_ptr<const world::snapshot> latest_;
 };

@@ -40,6 +40,10 @@ void add_sweep_command(CLI::App& app, int& result);
 /// `result` to its exit code.
 void add_generate_command(CLI::App& app, int& result);
 
+/// Adds `argus serve` (a live run with its operator console in the browser) to `app`; sets
+/// `result` to its exit code.
+void add_serve_command(CLI::App& app, int& result);
+
 /// Adds `argus validate` to `app`; its callback sets `result` to the command's exit code.
 void add_validate_command(CLI::App& app, int& result);
 

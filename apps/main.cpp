@@ -40,6 +40,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   int result = argus::apps::ok;
   argus::apps::add_run_command(app, result);
+  argus::apps::add_serve_command(app, result);
   argus::apps::add_validate_command(app, result);
   argus::apps::add_plan_command(app, result);
   argus::apps::add_crowd_command(app, result);

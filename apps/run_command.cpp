@@ -10,14 +10,15 @@
 #include "actors/run_scenario.hpp"
 #include "apps/commands.hpp"
 #include "apps/option_checks.hpp"
+#include "apps/run_overrides.hpp"
 #include "apps/run_record.hpp"
 #include "apps/set_option.hpp"
 #include "apps/task_option.hpp"
-#include "config/duration.hpp"
 #include "config/scenario_error.hpp"
 #include "config/scenario_loader.hpp"
 #include "eval/run_files.hpp"
 #include "fmt/format.h"
+#include "live/command_log.hpp"
 #include "nlohmann/json.hpp"
 
 namespace argus::apps {
@@ -25,11 +26,7 @@ namespace {
 
 struct run_arguments {
   std::string scenario;
-  std::optional<std::uint64_t> seed;
-  std::optional<unsigned> threads;
-  std::optional<double> speed;
-  std::optional<std::string> duration;
-  std::optional<std::string> out;
+  run_overrides overrides;
   std::vector<std::string> set;
   bool json = false;
   bool no_progress = false;
@@ -38,6 +35,7 @@ struct run_arguments {
   bool mot = false;
   bool no_feeds = false;
   std::vector<std::string> tasks;
+  std::optional<std::string> commands;
 };
 
 // `--video-size WxH`, each side 16 to 4096 pixels.
@@ -52,23 +50,6 @@ std::pair<int, int> parse_video_size(const std::string& text) {
         "--video-size",
         fmt::format("expected WIDTHxHEIGHT, 16 to 4096 pixels each, e.g. 320x240, got '{}'", text));
   return {width, height};
-}
-
-// Command-line overrides are validated like the file's own values, and named as options.
-void apply_overrides(const run_arguments& args, config::scenario& s) {
-  if (args.seed) s.run.seed = *args.seed;
-  if (args.threads) s.run.threads = *args.threads;
-  if (args.speed) s.run.speed = *args.speed;
-  if (args.out) s.run.output_dir = *args.out;
-  if (args.duration) {
-    auto d = config::parse_duration(*args.duration);
-    if (!d || d->count() <= 0.0)
-      throw CLI::ValidationError(
-          "--duration",
-          fmt::format("expected a positive duration with a unit, e.g. '2 min', got '{}'",
-                      *args.duration));
-    s.run.duration = *d;
-  }
 }
 
 void print_outcome(const run_arguments& args, const config::scenario& s,
@@ -119,14 +100,7 @@ void add_run_command(CLI::App& app, int& result) {
   auto* cmd = app.add_subcommand("run", "Run a scenario and write its event log and summary");
   auto args = std::make_shared<run_arguments>();
   cmd->add_option("SCENARIO", args->scenario, "Scenario YAML file")->required();
-  cmd->add_option("--seed", args->seed, "Run seed (overrides run.seed)")->check(whole_number());
-  cmd->add_option("--threads", args->threads, "CAF scheduler worker threads (0 = all cores)")
-      ->check(integer_in(0, 256));
-  cmd->add_option("--speed", args->speed,
-                  "1 = paced to wall clock, N = N times faster, 0 = free-running")
-      ->check(number_in(0.0, HUGE_VAL));
-  cmd->add_option("--duration", args->duration, "Virtual duration, e.g. '90 s' or '2 min'");
-  cmd->add_option("--out", args->out, "Output directory (default out/<scenario name>)");
+  add_run_override_options(cmd, args->overrides);
   add_set_option(cmd, args->set);
   cmd->add_flag("--json", args->json, "Print the outcome as one JSON object");
   cmd->add_flag("--no-progress", args->no_progress, "No progress line, even on a terminal");
@@ -142,6 +116,9 @@ void add_run_command(CLI::App& app, int& result) {
   cmd->add_option("--task", args->tasks,
                   "Add an operator task, e.g. 'at=10s,camera=7,pixel=160x120' (repeatable; keys "
                   "as in a scenario's tasks)");
+  cmd->add_option("--commands", args->commands,
+                  "Replay the operator's commands of a live run (DIR/commands.yaml of argus "
+                  "serve) at the ticks they took effect");
   cmd->callback([args, &result] {
     config::scenario scenario;
     try {
@@ -151,7 +128,16 @@ void add_run_command(CLI::App& app, int& result) {
       result = bad_input;
       return;
     }
-    apply_overrides(*args, scenario);
+    apply_run_overrides(args->overrides, scenario);
+    if (args->commands) {
+      try {
+        live::apply_commands(scenario, live::read_commands(*args->commands));
+      } catch (const std::exception& e) {
+        std::cerr << "argus run: --commands: " << e.what() << '\n';
+        result = bad_input;
+        return;
+      }
+    }
     actors::run_options options;
     std::tie(options.video_width_px, options.video_height_px) = parse_video_size(args->video_size);
     options.video = args->video;

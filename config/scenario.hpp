@@ -280,7 +280,9 @@ struct operator_task {
 };
 
 /// What a scheduled fault does.
-enum class fault_kind { crash, crash_and_recover, link_cut, link_heal, loss_burst };
+/// `recover` brings a crashed camera back (a fresh actor), as a crash_and_recover's second half
+/// does; the operator console's `recover` command is replayed as one.
+enum class fault_kind { crash, crash_and_recover, link_cut, link_heal, loss_burst, recover };
 
 /// One scheduled fault. `peer` is the other end of a link fault; `length` is the recovery
 /// delay (crash_and_recover) or the burst length (loss_burst).

@@ -12,6 +12,8 @@ argus_packages=(
   libyaml-cpp-dev libcli11-dev libspdlog-dev libfmt-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev clang-format
   chromium  # the report test loads report.html in headless Chromium
+  libcpp-httplib-dev  # argus serve's HTTP server (Server-Sent Events for the live stream)
+  chromium-driver python3-selenium  # the live console's end-to-end test drives the page
 )
 
 argus_install_missing() {

@@ -1,0 +1,116 @@
+#include <csignal>
+#include <iostream>
+#include <memory>
+#include <optional>
+
+#include "actors/run_scenario.hpp"
+#include "apps/commands.hpp"
+#include "apps/option_checks.hpp"
+#include "apps/run_overrides.hpp"
+#include "apps/run_record.hpp"
+#include "apps/set_option.hpp"
+#include "apps/task_option.hpp"
+#include "config/scenario_error.hpp"
+#include "config/whole_file.hpp"
+#include "fmt/format.h"
+#include "live/command_log.hpp"
+#include "live/session.hpp"
+#include "serve/console_server.hpp"
+#include "world/layout_loader.hpp"
+
+namespace argus::apps {
+namespace {
+
+struct serve_arguments {
+  std::string scenario;
+  run_overrides overrides;
+  std::vector<std::string> set;
+  std::vector<std::string> tasks;
+  std::string bind = "127.0.0.1";
+  int port = 8080;
+  bool hold = false;
+};
+
+// Blocks until SIGINT or SIGTERM (argus serve --hold, once the run is over).
+void wait_for_interrupt() {
+  sigset_t signals;
+  sigemptyset(&signals);
+  sigaddset(&signals, SIGINT);
+  sigaddset(&signals, SIGTERM);
+  pthread_sigmask(SIG_BLOCK, &signals, nullptr);
+  int received = 0;
+  sigwait(&signals, &received);
+}
+
+int serve(const serve_arguments& args) {
+  config::scenario scenario;
+  try {
+    scenario = load_with_tasks(args.scenario, overrides_from(args.set), args.tasks);
+  } catch (const config::scenario_error& e) {
+    std::cerr << e.what() << '\n';
+    return bad_input;
+  }
+  apply_run_overrides(args.overrides, scenario);
+  // A live run is paced to the wall clock unless asked otherwise: it is there to be watched.
+  const double speed = args.overrides.speed.value_or(1.0);
+  try {
+    auto session = std::make_shared<live::session>(scenario, speed);
+    auto station = world::station::load(world::layout_path(scenario));
+    serve::console_server server(scenario, station, session);
+    serve::server_settings settings;
+    settings.bind = args.bind;
+    settings.port = args.port;
+    server.start(settings);
+    std::cout << fmt::format("argus serve: http://{}:{}/", args.bind, server.port()) << std::endl;
+    actors::run_options options;
+    options.live = session;
+    options.station = station;
+    auto outcome = actors::run_scenario(scenario, options);
+    const auto commands = session->log.commands();
+    config::write_whole_file(outcome.output_dir / "commands.yaml", [&](std::ostream& out) {
+      out << live::commands_yaml(commands, scenario);
+    });
+    record_run(scenario, outcome.output_dir);
+    const auto& r = outcome.result;
+    std::cout << fmt::format(
+        "{}: {} ticks, {:.1f} s simulated in {:.2f} s wall, {} events, {} operator commands\n",
+        scenario.name, r.ticks, r.virtual_seconds, r.wall_seconds, r.events_total, commands.size());
+    std::cout << "  events:   " << (outcome.output_dir / "events.jsonl").string() << '\n';
+    std::cout << "  commands: " << (outcome.output_dir / "commands.yaml").string() << '\n';
+    std::cout << "  replay:   argus run " << (outcome.output_dir / "scenario.yaml").string()
+              << " --commands " << (outcome.output_dir / "commands.yaml").string() << " --out DIR"
+              << std::endl;
+    if (args.hold) {
+      std::cout << "argus serve: the run is over; serving its last state until interrupted"
+                << std::endl;
+      wait_for_interrupt();
+    }
+    server.stop();
+    return ok;
+  } catch (const std::exception& e) {
+    std::cerr << "argus serve: " << e.what() << '\n';
+    return run_failed;
+  }
+}
+
+}  // namespace
+
+void add_serve_command(CLI::App& app, int& result) {
+  auto* cmd = app.add_subcommand(
+      "serve", "Run a scenario live and serve its operator console in the browser");
+  auto args = std::make_shared<serve_arguments>();
+  cmd->add_option("SCENARIO", args->scenario, "Scenario YAML file")->required();
+  add_run_override_options(cmd, args->overrides);
+  add_set_option(cmd, args->set);
+  cmd->add_option("--task", args->tasks,
+                  "Add an operator task, e.g. 'at=10s,camera=7,pixel=160x120' (repeatable)");
+  cmd->add_option("--port", args->port, "TCP port to serve on (0 = any free port)")
+      ->check(integer_in(0, 65535));
+  cmd->add_option("--bind", args->bind,
+                  "Address to listen on (default 127.0.0.1: this machine only)");
+  cmd->add_flag("--hold", args->hold,
+                "Keep serving after the run has ended, until interrupted (Ctrl-C)");
+  cmd->callback([args, &result] { result = serve(*args); });
+}
+
+}  // namespace argus::apps

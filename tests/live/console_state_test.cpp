@@ -1,0 +1,82 @@
+// What the console shows, built from the run's events as the recorder hands them over.
+#include "live/console_state.hpp"
+
+#include <gtest/gtest.h>
+
+namespace argus::live {
+namespace {
+
+config::scenario three_cameras() {
+  config::scenario s;
+  for (int id : {1, 2, 3}) {
+    config::camera_settings c;
+    c.id = id;
+    s.cameras.push_back(c);
+  }
+  return s;
+}
+
+nlohmann::json camera(const nlohmann::json& state, int id) {
+  for (const auto& c : state["cameras"])
+    if (c["id"] == id) return c;
+  return {};
+}
+
+TEST(console_state, follows_groups_states_and_crashes) {
+  console_state console(three_cameras());
+  const std::vector<event_line> events{
+      {10, "script", "task_issued", R"("task":0,"by":"pixel","pixel":[1,2],"camera":2)"},
+      {10, "camera/2", "task_target", R"("camera":2,"task":0,"pedestrian":12,"by":"pixel")"},
+      {10, "camera/2", "task_created", R"("camera":2,"task":0,"min_cameras":1)"},
+      {10, "camera/2", "node_state", R"("from":"idle","to":"performing_task")"},
+      {12, "camera/3", "joined", R"("camera":3,"task":0,"leader":2,"reassign":false)"},
+      {12, "camera/3", "tracking", R"("camera":3,"task":0,"state":"track")"},
+  };
+  console.record_events(events);
+  auto state = console.state_json();
+  ASSERT_EQ(state["groups"].size(), 1u);
+  EXPECT_EQ(state["groups"][0]["task"], 0);
+  EXPECT_EQ(state["groups"][0]["leader"], 2);
+  EXPECT_EQ(state["groups"][0]["members"], nlohmann::json::array({2, 3}));
+  EXPECT_EQ(camera(state, 2)["state"], "performing_task");
+  EXPECT_EQ(camera(state, 3)["tracking"], "track");
+  EXPECT_EQ(camera(state, 3)["task"], 0);
+  ASSERT_EQ(state["tasks"].size(), 1u);
+  EXPECT_EQ(state["tasks"][0]["pedestrian"], 12);
+  EXPECT_EQ(state["tasks"][0]["status"], "observed");
+
+  const std::vector<event_line> crash{
+      {20, "faults", "fault", R"("fault":"crash","camera":2,"random":false,"applied":true)"},
+      {20, "script", "task_cancelled", R"("task":0,"camera":2)"}};
+  console.record_events(crash);
+  state = console.state_json();
+  EXPECT_EQ(camera(state, 2)["alive"], false);
+  EXPECT_EQ(camera(state, 2)["state"], "crashed");
+  EXPECT_EQ(state["groups"][0]["members"], nlohmann::json::array({3}));
+  EXPECT_EQ(state["tasks"][0]["status"], "cancelled");
+  EXPECT_FALSE(state["recent"].empty());
+
+  console.record_events(
+      std::vector<event_line>{{30, "faults", "node_recovered", R"("camera":2,"applied":true)"}});
+  EXPECT_EQ(camera(console.state_json(), 2)["alive"], true);
+}
+
+TEST(console_state, feeds_only_what_a_node_sensed) {
+  console_state console(three_cameras());
+  EXPECT_FALSE(console.feed(1));
+  console.publish_camera(1, 5, 10.0, -20.0, 40.0, cv::Mat(), {});
+  EXPECT_FALSE(console.feed(1));  // it looked at nothing
+  EXPECT_DOUBLE_EQ(console.pose(1)->pan_deg, 10.0);
+  console.publish_camera(1, 6, 11.0, -20.0, 40.0, cv::Mat(4, 4, CV_8UC3, cv::Scalar(1, 2, 3)),
+                         {cv::Rect2d(1, 1, 2, 2)});
+  const auto frame = console.feed(1);
+  ASSERT_TRUE(frame);
+  EXPECT_EQ(frame->tick, 6);
+  EXPECT_EQ(frame->sequence, 1u);
+  EXPECT_EQ(frame->boxes.size(), 1u);
+  EXPECT_FALSE(console.feed(9));
+  EXPECT_FALSE(console.pose(9));
+}
+
+}  // namespace
+}  // namespace argus::live
