@@ -51,12 +51,7 @@ void take_live_commands(script_state& st, std::int64_t tick) {
   const auto at = config::to_seconds(tick, st.scenario.run.tick);
   for (auto& c : commands) {
     if (c.kind == live::command_kind::task) {
-      config::operator_task t;
-      t.at = at;
-      t.camera = c.camera;
-      t.by = config::task_target::pixel;
-      t.pixel = c.pixel;
-      t.cameras_wanted = c.cameras_wanted;
+      const auto t = live::operator_task_of(c, at);
       const auto index = st.scenario.tasks.size();
       st.scenario.tasks.push_back(t);
       st.steps.emplace_back(tick, index, false);

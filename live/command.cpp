@@ -105,4 +105,14 @@ std::variant<command, std::string> parse_command(std::string_view json,
   return out;
 }
 
+config::operator_task operator_task_of(const command& c, config::seconds at) {
+  config::operator_task t;
+  t.at = at;
+  t.camera = c.camera;
+  t.by = config::task_target::pixel;
+  t.pixel = c.pixel;
+  t.cameras_wanted = c.cameras_wanted;
+  return t;
+}
+
 }  // namespace argus::live

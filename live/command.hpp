@@ -43,6 +43,10 @@ constexpr bool is_task_command(command_kind kind) noexcept {
   return kind == command_kind::task || kind == command_kind::cancel;
 }
 
+/// The scenario task a task command stands for, issued at `at`: the operator's click, as a
+/// scenario's `pixel:` task (the same path live and in a replay).
+config::operator_task operator_task_of(const command& c, config::seconds at);
+
 /// Reads a command sent by the page, e.g. `{"command":"task","camera":7,"pixel":[160,120]}` or
 /// `{"command":"cut","camera":1,"peer":2}`, and checks it against `scenario`: a camera that
 /// exists, a pixel inside that camera's frame, a link that exists. Returns the command, or a

@@ -123,13 +123,7 @@ void apply_commands(config::scenario& s, std::span<const timed_command> commands
           throw std::invalid_argument(
               fmt::format("{}: task {} does not follow the scenario's {} tasks", where, c.task,
                           s.tasks.size()));
-        config::operator_task t;
-        t.at = at;
-        t.camera = c.camera;
-        t.by = config::task_target::pixel;
-        t.pixel = c.pixel;
-        t.cameras_wanted = c.cameras_wanted;
-        s.tasks.push_back(t);
+        s.tasks.push_back(operator_task_of(c, at));
         continue;
       }
       case command_kind::cancel: {
