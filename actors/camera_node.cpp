@@ -234,8 +234,9 @@ void take_query(camera_node_state& st, const due_task& q, const world::snapshot*
   query.task.min_cameras = static_cast<std::uint16_t>(q.request.cameras_wanted);
   query.task.max_cameras = static_cast<std::uint16_t>(q.request.cameras_max());
   query.box = *r.box;
-  query.task.target = st.pixels ? st.pixels->acquire(q.task, image, cv::Rect(*r.box))
-                                : st.emulated->acquire(q.task, *snap, r.pedestrian);
+  query.task.target = st.pixels
+                          ? st.pixels->acquire(q.task, image, st.head->state(), cv::Rect(*r.box))
+                          : st.emulated->acquire(q.task, *snap, r.pedestrian);
   st.input.queries.push_back(std::move(query));
 }
 
@@ -342,8 +343,9 @@ void follow_oracle(camera_node_state& st, const world::snapshot* snap, const cv:
   if (sig == st.oracle_signatures.end()) {
     const auto box = sensing::operator_box(*snap, *st.world->station, view_of(st), target);
     if (!box || (st.pixels && image.empty())) return;
-    const auto signature = st.pixels ? st.pixels->acquire(task, image, cv::Rect(*box))
-                                     : st.emulated->acquire(task, *snap, target);
+    const auto signature = st.pixels
+                               ? st.pixels->acquire(task, image, st.head->state(), cv::Rect(*box))
+                               : st.emulated->acquire(task, *snap, target);
     sig = st.oracle_signatures.emplace(task, signature).first;
   }
   st.looks.push_back({task, sig->second});
@@ -384,7 +386,7 @@ void finish_turn(node_actor* self, const cv::Mat& image) {
   const auto snap = std::move(st.snap);
   if (snap && !st.looks.empty()) {
     if (st.pixels && !image.empty()) {
-      st.input.looks = st.pixels->look(image, st.looks);
+      st.input.looks = st.pixels->look(image, st.head->state(), st.looks);
     } else if (st.emulated) {
       st.input.looks = st.emulated->look(*snap, *st.world->station, view_of(st), st.looks);
     }

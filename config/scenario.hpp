@@ -208,6 +208,9 @@ struct sensing_settings {
   std::string sensor_model;
   /// Pixel sensing: the trackers' kernel sizes.
   tracker_scales scales = tracker_scales::target;
+  /// Pixel sensing: trackers follow the camera's own pan, tilt and zoom between frames
+  /// (vision::tracker_settings::ego_motion); false, the default, is the paper's tracker.
+  bool ego_motion = false;
   friend bool operator==(const sensing_settings&, const sensing_settings&) = default;
 };
 
@@ -237,6 +240,9 @@ struct controller_settings {
   conflict_solver solver = conflict_solver::best_solv;
   merge_rule merge = merge_rule::highest_id;
   control_strategy strategy = control_strategy::paper;
+  /// In Track the camera zooms so that the target fills half the frame's height (Section
+  /// III-B, "fixate and zoom"); false: it fixates only and keeps its field of view.
+  bool zoom_in_track = true;
   // Beyond Table 2: what the paper leaves unstated (docs/protocol.md says why each).
   /// A leader collects bids for this long after announcing an auction, then selects.
   seconds auction_window{3.0};

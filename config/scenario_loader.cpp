@@ -22,7 +22,8 @@ namespace {
 // The keys each mapping allows, in schema order (the order "expected one of" lists them).
 constexpr std::array<std::string_view, 9> scenario_keys{
     "name", "run", "world", "cameras", "network", "controller", "sensing", "tasks", "faults"};
-constexpr std::array<std::string_view, 3> sensing_keys{"mode", "sensor_model", "tracker_scales"};
+constexpr std::array<std::string_view, 4> sensing_keys{"mode", "sensor_model", "tracker_scales",
+                                                       "ego_motion"};
 constexpr std::array<std::string_view, 6> run_keys{"seed",  "duration", "tick",
                                                    "speed", "threads",  "output_dir"};
 constexpr std::array<std::string_view, 7> world_keys{
@@ -65,7 +66,7 @@ constexpr std::array<std::string_view, 12> network_keys{"loss_probability",
                                                         "reorder",
                                                         "hello_interval",
                                                         "neighbour_timeout"};
-constexpr std::array<std::string_view, 21> controller_keys{"wait_timeout",
+constexpr std::array<std::string_view, 22> controller_keys{"wait_timeout",
                                                            "search_timeout",
                                                            "min_relevance",
                                                            "heartbeat_interval",
@@ -82,6 +83,7 @@ constexpr std::array<std::string_view, 21> controller_keys{"wait_timeout",
                                                            "solver",
                                                            "merge",
                                                            "strategy",
+                                                           "zoom_in_track",
                                                            "auction_window",
                                                            "auction_interval",
                                                            "relevance_look_time",
@@ -434,6 +436,7 @@ class scenario_parser {
     controller.read("solver", out.solver);
     controller.read("merge", out.merge);
     controller.read("strategy", out.strategy);
+    controller.read("zoom_in_track", out.zoom_in_track);
     controller.read("auction_window", out.auction_window, positive);
     controller.read("auction_interval", out.auction_interval, non_negative);
     controller.read("relevance_look_time", out.relevance_look_time, positive);
@@ -445,6 +448,7 @@ class scenario_parser {
     sensing.read("mode", out.mode);
     sensing.read("sensor_model", out.sensor_model);
     sensing.read("tracker_scales", out.scales);
+    sensing.read("ego_motion", out.ego_motion);
   }
 
   void read_tasks(const YAML::Node& node, const std::vector<camera_settings>& cameras,

@@ -242,6 +242,7 @@ std::string to_yaml(const scenario& s) {
   out.entry(1, "solver", yaml_name(controller.solver));
   out.entry(1, "merge", yaml_name(controller.merge));
   out.entry(1, "strategy", yaml_name(controller.strategy));
+  out.entry(1, "zoom_in_track", boolean(controller.zoom_in_track));
   out.entry(1, "auction_window", duration(controller.auction_window));
   out.entry(1, "auction_interval", duration(controller.auction_interval));
   out.entry(1, "relevance_look_time", duration(controller.relevance_look_time));
@@ -251,6 +252,7 @@ std::string to_yaml(const scenario& s) {
   out.entry(1, "mode", yaml_name(s.sensing.mode));
   out.entry(1, "sensor_model", quoted(s.sensing.sensor_model));
   out.entry(1, "tracker_scales", yaml_name(s.sensing.scales));
+  out.entry(1, "ego_motion", boolean(s.sensing.ego_motion));
 
   out.line(0, s.tasks.empty() ? "tasks: []" : "tasks:");
   for (const auto& each : s.tasks) out.line(1, task(each));

@@ -68,7 +68,12 @@ camera_controller::camera_controller(node_identity me, const config::scenario& s
       settings_(scenario.controller),
       tick_(scenario.run.tick),
       message_timeout_(scenario.network.message_timeout),
-      fsm_(me_.limits, scenario.controller),
+      fsm_(me_.limits, scenario.controller,
+           [&] {
+             vision::tracking_fsm_settings t;
+             if (!scenario.controller.zoom_in_track) t.fixate.zoom_gain = 0.0;
+             return t;
+           }()),
       negotiator_(config::to_ticks(settings_.merge_timeout, tick_),
                   config::to_ticks(settings_.demotion_backoff_max, tick_),
                   config::derive_seed(scenario.run.seed,

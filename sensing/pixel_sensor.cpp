@@ -15,12 +15,18 @@ vision::tracker_settings pixel_sensor::settings_for(const config::sensing_settin
   settings.scales.rule = sensing.scales == config::tracker_scales::paper
                              ? vision::scale_rule::paper
                              : vision::scale_rule::target;
+  settings.ego_motion = sensing.ego_motion;
   return settings;
 }
 
 std::vector<controller::look_result> pixel_sensor::look(
-    const cv::Mat& bgr, const std::vector<controller::look_request>& looks) {
+    const cv::Mat& bgr, const vision::ptz_state& pose,
+    const std::vector<controller::look_request>& looks) {
   std::map<controller::task_id, vision::tracker> kept;
+  const vision::frame_size frame{bgr.cols, bgr.rows};
+  if (settings_.ego_motion && last_pose_)
+    for (auto& [task, t] : trackers_) t.follow_camera(*last_pose_, pose, frame);
+  last_pose_ = pose;
   std::vector<controller::look_result> out;
   for (const auto& l : looks) {
     auto it = trackers_.find(l.task);
@@ -35,7 +41,8 @@ std::vector<controller::look_result> pixel_sensor::look(
 }
 
 protocol::signature pixel_sensor::acquire(controller::task_id task, const cv::Mat& bgr,
-                                          const cv::Rect& box) {
+                                          const vision::ptz_state& pose, const cv::Rect& box) {
+  last_pose_ = pose;
   const auto region = box & cv::Rect(0, 0, bgr.cols, bgr.rows);
   auto histogram = vision::color_histogram::of_region(bgr, region);
   vision::tracker t(histogram.normalized(), settings_);

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <map>
+#include <optional>
 #include <vector>
 
 #include "controller/controller_io.hpp"
@@ -18,21 +19,25 @@ class pixel_sensor {
   /// A sensor whose trackers use `settings`.
   explicit pixel_sensor(vision::tracker_settings settings = {});
 
-  /// The trackers' settings for a scenario's `sensing` block (its tracker_scales).
+  /// The trackers' settings for a scenario's `sensing` block (tracker_scales, ego_motion).
   static vision::tracker_settings settings_for(const config::sensing_settings& sensing);
 
-  /// Looks for every requested target in `bgr`; trackers of targets no longer asked for are
-  /// dropped, new ones search the whole frame.
-  std::vector<controller::look_result> look(const cv::Mat& bgr,
+  /// Looks for every requested target in `bgr`, taken at `pose`; trackers of targets no longer
+  /// asked for are dropped, new ones search the whole frame. With ego-motion compensation on,
+  /// each track's last box first follows the camera's move since the last frame.
+  std::vector<controller::look_result> look(const cv::Mat& bgr, const vision::ptz_state& pose,
                                             const std::vector<controller::look_request>& looks);
 
-  /// The operator picked the pedestrian in `box` for `task`: its signature from the pixels
-  /// in the box, and a tracker started there.
-  protocol::signature acquire(controller::task_id task, const cv::Mat& bgr, const cv::Rect& box);
+  /// The operator picked the pedestrian in `box` for `task` in `bgr`, taken at `pose`: its
+  /// signature from the pixels in the box, and a tracker started there.
+  protocol::signature acquire(controller::task_id task, const cv::Mat& bgr,
+                              const vision::ptz_state& pose, const cv::Rect& box);
 
  private:
   vision::tracker_settings settings_;
   std::map<controller::task_id, vision::tracker> trackers_;
+  // The pose of the last frame looked at, for ego-motion compensation.
+  std::optional<vision::ptz_state> last_pose_;
 };
 
 }  // namespace argus::sensing

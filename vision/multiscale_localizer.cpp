@@ -607,11 +607,22 @@ std::vector<localized_region> multiscale_localizer::localize(const cv::Mat& back
         best_score = std::max(best_score, scores_.back());
       }
       int chosen = -1;  // sizes may come in any order
-      for (std::size_t k = 0; k < scale_count; ++k)
-        if (scores_[k] >= near_best_score * best_score && scales_[k] > chosen) {
+      // With an expected size, the one nearest to it among those (larger on a tie): choosing
+      // the largest ratchets a tracker's box up a size whenever two score alike.
+      const double expected = settings_.expected_scale;
+      auto distance = [&](int l) { return std::abs(std::log(l / expected)); };
+      for (std::size_t k = 0; k < scale_count; ++k) {
+        if (scores_[k] < near_best_score * best_score) continue;
+        const bool better =
+            chosen < 0 ||
+            (expected > 0.0 ? distance(scales_[k]) < distance(chosen) ||
+                                  (distance(scales_[k]) == distance(chosen) && scales_[k] > chosen)
+                            : scales_[k] > chosen);
+        if (better) {
           chosen = scales_[k];
           box_score = scores_[k];
         }
+      }
       best_scale = chosen;
     }
 

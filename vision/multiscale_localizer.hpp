@@ -69,6 +69,10 @@ struct localizer_settings {
   int max_regions = 16;
   /// How step 4 picks the kernel size.
   scale_choice choice = scale_choice::sharpness;
+  /// With scale_choice::score: the kernel size expected (> 0), e.g. a tracker's last box
+  /// carried along with the camera's motion; of the sizes scoring near the best, the nearest
+  /// to it wins instead of the largest. 0: the largest.
+  double expected_scale = 0.0;
 };
 
 /// The localiser's settings under `scales` for a frame `frame_height_px` high and a target

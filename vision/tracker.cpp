@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "vision/backprojection.hpp"
+#include "vision/ego_motion.hpp"
 
 namespace argus::vision {
 
@@ -33,6 +34,17 @@ std::optional<track_observation> tracker::find_in(const cv::Mat& bin_indices,
   return track_observation{true, found.front().box() + window.tl(), found.front().score};
 }
 
+void tracker::follow_camera(const ptz_state& from, const ptz_state& to, const frame_size& frame) {
+  if (!box_ || from == to) return;
+  const auto moved = reproject_box(cv::Rect2d(*box_), from, to, frame);
+  if (!moved) return;
+  const cv::Rect rounded(static_cast<int>(std::lround(moved->x)),
+                         static_cast<int>(std::lround(moved->y)),
+                         std::max(1, static_cast<int>(std::lround(moved->width))),
+                         std::max(1, static_cast<int>(std::lround(moved->height))));
+  box_ = rounded;
+}
+
 track_observation tracker::update(const cv::Mat& bgr) {
   const auto indices = bin_index_image(bgr, target_.bins());
   const cv::Rect frame(0, 0, bgr.cols, bgr.rows);
@@ -42,10 +54,12 @@ track_observation tracker::update(const cv::Mat& bgr) {
       localizer_settings_for(settings_.scales, size, bgr.rows, settings_.rho, 1);
   std::optional<track_observation> seen;
   if (box_ && !lost_) {
+    auto tracking = localizing;
+    if (settings_.ego_motion) tracking.expected_scale = kernel_size_for(cv::Size2d(box_->size()));
     const int dx = static_cast<int>(std::lround(settings_.search_margin * box_->width));
     const int dy = static_cast<int>(std::lround(settings_.search_margin * box_->height));
     const cv::Rect window(box_->x - dx, box_->y - dy, box_->width + 2 * dx, box_->height + 2 * dy);
-    seen = find_in(indices, window & frame, localizing);
+    seen = find_in(indices, window & frame, tracking);
   }
   if (!seen && (settings_.search_whole_frame || !box_)) seen = find_in(indices, frame, localizing);
   if (!seen) {

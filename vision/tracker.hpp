@@ -36,6 +36,11 @@ struct tracker_settings {
   /// The localiser's kernel sizes: by default around the last box's size (the paper's
   /// frame-height scales until a box is known, or with scale_rule::paper).
   scale_settings scales;
+  /// Follow the camera's own motion: the last box is carried along with the camera's pan,
+  /// tilt and zoom between frames (follow_camera(), which the node's sensor calls: it knows
+  /// the poses), and of the kernel sizes scoring near the best the one nearest that box's
+  /// size is taken, not the largest. False: the paper's tracker, which knows no poses.
+  bool ego_motion = false;
 };
 
 /// Follows one target frame to frame: backprojects its histogram in a window around the last
@@ -53,6 +58,10 @@ class tracker {
 
   /// Processes one BGR frame.
   track_observation update(const cv::Mat& bgr);
+
+  /// The camera moved from `from` to `to` since the last frame: the last box is carried to
+  /// where the same ray is now (reproject_box()), so the next search starts there.
+  void follow_camera(const ptz_state& from, const ptz_state& to, const frame_size& frame);
 
   /// Whether the last update lost the target (or no track was started).
   bool lost() const noexcept { return lost_; }

@@ -293,6 +293,16 @@ TEST(scenario_loader, rejects_a_second_document) {
 }
 
 // The pixel trackers' kernel sizes: around the target by default, the paper's on request.
+TEST(scenario_loader, trackers_know_no_poses_and_cameras_zoom_in_track_unless_told) {
+  const auto paper = parse_scenario("name: a\n", "a.yaml");
+  EXPECT_FALSE(paper.sensing.ego_motion);
+  EXPECT_TRUE(paper.controller.zoom_in_track);
+  const auto ours =
+      parse_scenario("sensing: {ego_motion: true}\ncontroller: {zoom_in_track: false}\n", "a.yaml");
+  EXPECT_TRUE(ours.sensing.ego_motion);
+  EXPECT_FALSE(ours.controller.zoom_in_track);
+}
+
 TEST(scenario_loader, tracker_scales_default_to_the_target_and_read_paper) {
   EXPECT_EQ(parse_scenario("name: a\n", "a.yaml").sensing.scales, tracker_scales::target);
   EXPECT_EQ(parse_scenario("sensing: {tracker_scales: paper}\n", "a.yaml").sensing.scales,

@@ -86,6 +86,8 @@ TEST(scenario_writer, round_trips_awkward_values_exactly) {
   by_entry.max_cameras = 3;
   original.tasks.push_back(by_entry);
   original.controller.strategy = control_strategy::oracle;
+  original.sensing.ego_motion = true;
+  original.controller.zoom_in_track = false;
   expect_same(round_trip(original), original);
 }
 

@@ -9,6 +9,7 @@ set(argus_vision_lvr_tests
   real_video_localization_test
   tracker_test
   fixate_zoom_test
+  ego_motion_test
   relevance_test
   emulated_sensor_test
   emulated_sensor_fidelity_test
