@@ -20,19 +20,28 @@ double focal_length_px(double field_of_view_deg, int frame_width_px) {
   return 0.5 * frame_width_px / std::tan(0.5 * field_of_view_deg * deg);
 }
 
+camera_axes axes_of(const ptz_state& pose) {
+  const double p = pose.pan_deg * deg, t = pose.tilt_deg * deg;
+  return {{std::cos(t) * std::cos(p), std::cos(t) * std::sin(p), std::sin(t)},
+          {std::sin(p), -std::cos(p), 0.0},
+          {-std::sin(t) * std::cos(p), -std::sin(t) * std::sin(p), std::cos(t)}};
+}
+
+cv::Vec3d ray_through(const cv::Point2d& pixel, const ptz_state& pose, const frame_size& frame) {
+  const double f = focal_length_px(pose.field_of_view_deg, frame.width_px);
+  // The pixel in camera axes: x right, y up, z forward.
+  const double cx = pixel.x - frame.width_px / 2.0;
+  const double cy = frame.height_px / 2.0 - pixel.y;
+  const auto a = axes_of(pose);
+  cv::Vec3d w;
+  for (int i = 0; i < 3; ++i) w[i] = cx * a.right[i] + cy * a.up[i] + f * a.forward[i];
+  return w;
+}
+
 ptz_state centring_pose(const ptz_state& current, const cv::Rect2d& box, const frame_size& frame,
                         double height_fraction) {
   const double f = focal_length_px(current.field_of_view_deg, frame.width_px);
-  // The ray through the box centre in camera axes (x right, y up, z forward).
-  const double cx = box.x + box.width / 2.0 - frame.width_px / 2.0;
-  const double cy = frame.height_px / 2.0 - (box.y + box.height / 2.0);
-  const double p = current.pan_deg * deg, t = current.tilt_deg * deg;
-  // Camera axes in the base frame (z up, pan 0 along x).
-  const double fwd[3] = {std::cos(t) * std::cos(p), std::cos(t) * std::sin(p), std::sin(t)};
-  const double right[3] = {std::sin(p), -std::cos(p), 0.0};
-  const double up[3] = {-std::sin(t) * std::cos(p), -std::sin(t) * std::sin(p), std::cos(t)};
-  double w[3];
-  for (int i = 0; i < 3; ++i) w[i] = cx * right[i] + cy * up[i] + f * fwd[i];
+  const auto w = ray_through({box.x + box.width / 2.0, box.y + box.height / 2.0}, current, frame);
   ptz_state goal;
   goal.pan_deg = std::atan2(w[1], w[0]) / deg;
   goal.tilt_deg = std::atan2(w[2], std::hypot(w[0], w[1])) / deg;

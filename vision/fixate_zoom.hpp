@@ -16,6 +16,21 @@ namespace argus::vision {
 /// Pinhole focal length in pixels for a horizontal field of view: (w / 2) / tan(fov / 2).
 double focal_length_px(double field_of_view_deg, int frame_width_px);
 
+/// A camera's axes at `pose` in the base frame (z up, pan 0 along x).
+struct camera_axes {
+  cv::Vec3d forward;
+  cv::Vec3d right;
+  cv::Vec3d up;
+};
+
+/// The axes of a pan-tilt head at `pose`: pan about the vertical, tilt about the panned
+/// horizontal axis.
+camera_axes axes_of(const ptz_state& pose);
+
+/// The ray (base frame, not normalised: its forward part is the focal length) through
+/// `pixel` of a frame taken at `pose`.
+cv::Vec3d ray_through(const cv::Point2d& pixel, const ptz_state& pose, const frame_size& frame);
+
 /// The pose that centres the box's centre in the image (exactly, for a pan-tilt head: pan
 /// about the vertical, tilt about the panned horizontal axis) with a field of view in which
 /// the box's height is `height_fraction` of the frame height. Not clamped to any limits: this

@@ -611,14 +611,13 @@ std::vector<localized_region> multiscale_localizer::localize(const cv::Mat& back
       // the largest ratchets a tracker's box up a size whenever two score alike.
       const double expected = settings_.expected_scale;
       auto distance = [&](int l) { return std::abs(std::log(l / expected)); };
+      auto preferred = [&](int a, int b) {
+        if (expected > 0.0 && distance(a) != distance(b)) return distance(a) < distance(b);
+        return a > b;
+      };
       for (std::size_t k = 0; k < scale_count; ++k) {
         if (scores_[k] < near_best_score * best_score) continue;
-        const bool better =
-            chosen < 0 ||
-            (expected > 0.0 ? distance(scales_[k]) < distance(chosen) ||
-                                  (distance(scales_[k]) == distance(chosen) && scales_[k] > chosen)
-                            : scales_[k] > chosen);
-        if (better) {
+        if (chosen < 0 || preferred(scales_[k], chosen)) {
           chosen = scales_[k];
           box_score = scores_[k];
         }

@@ -191,6 +191,26 @@ TEST(multiscale_localizer, finds_coloured_figures_across_zoom) {
 }
 
 // Every occurrence: two pedestrians dressed alike, one near and one far.
+// Every kernel size fits inside one uniform target, so every size scores the same: the largest
+// wins, unless a size is expected (a tracker's last box), then the nearest to it.
+TEST(multiscale_localizer, an_expected_size_wins_among_sizes_that_score_alike) {
+  cv::Mat b(240, 320, CV_32F, cv::Scalar(0.0f));
+  b(cv::Rect(130, 60, 60, 120)).setTo(1.0f);
+  localizer_settings settings{{3, 5, 8, 12}, 0.5, 1, scale_choice::score};
+  auto chosen = [&] {
+    multiscale_localizer localizer(settings);
+    const auto found = localizer.localize(b, mean_of(b));
+    return found.empty() ? -1 : found.front().scale;
+  };
+  EXPECT_EQ(chosen(), 12);
+  settings.expected_scale = 5.0;
+  EXPECT_EQ(chosen(), 5);
+  settings.expected_scale = 6.0;  // nearer 5 than 8 in ratio
+  EXPECT_EQ(chosen(), 5);
+  settings.expected_scale = 30.0;
+  EXPECT_EQ(chosen(), 12);
+}
+
 TEST(multiscale_localizer, finds_every_occurrence) {
   cv::Mat frame = textured_background({320, 240}, 9);
   auto near = draw_pedestrian(frame, {30, 20}, 150, red_shirt, blue_trousers);
