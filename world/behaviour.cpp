@@ -547,7 +547,8 @@ class stepper {
         const double denominator = planes[j].normal.dot(d);
         const double numerator = planes[j].limit - planes[j].normal.dot(p);
         if (std::abs(denominator) < 1e-12) {
-          if (numerator < 0.0) empty = true;
+          // Parallel lines: empty only if plane j excludes line i by more than rounding.
+          if (numerator < -1e-9) empty = true;
           continue;
         }
         const double t = numerator / denominator;
@@ -624,7 +625,14 @@ class stepper {
         repulsion -=
             n * (settings_.social_strength * weight * std::exp(-gap / settings_.social_range_m));
       }
-      if (!same_line) {
+      // Merging into one way (a doorway), each of two walkers has the other across its path:
+      // were both to keep their headway to the other, both would stop. The one farther from
+      // the goal keeps it; the one nearer goes on (ties: the lower id), as a zipper merges.
+      const bool behind_me =
+          other.route == s_.route && s_.route >= 0 &&
+          (other.distance_to_goal_m > s_.distance_to_goal_m ||
+           (other.distance_to_goal_m == s_.distance_to_goal_m && other.id > s_.id));
+      if (!same_line && !behind_me) {
         // Headway: the free path along the way ahead before touching someone in it.
         const double along = offset.dot(desired_direction);
         const double contact = radius + other.radius_m();
@@ -650,14 +658,30 @@ class stepper {
     if (std::isfinite(nearest_ahead_m)) {
       desired *= std::min(1.0, nearest_ahead_m / (settings_.headway_s * v0));
     }
-    // Yielding: stop pushing; the repulsion of the one given way to then moves one aside.
-    if (yield) desired = vec2::Zero();
+    // Yielding: step back a little, deaf to the crowd's push. Merely standing, the yielder
+    // stays wedged: the repulsion of those behind presses it into the arch (two walkers side
+    // by side in a door too narrow for both, each against a jamb, stood so for minutes).
+    if (yield) {
+      desired = -settings_.yield_step_back_mps * desired_direction;
+      repulsion = vec2::Zero();
+    }
     vec2 acceleration = (desired - s_.velocity) / settings_.relaxation_s + repulsion;
+    // A corner where segments meet is one obstacle: counted once per segment it would push
+    // twice as hard at a doorway's jamb, and its two identical half-planes leave the linear
+    // program a parallel pair that rounding can declare empty (pinning a walker at the jamb).
+    std::array<vec2, 16> corners;
+    std::size_t corner_count = 0;
     for (const auto index : where_.segments_near(s_.position)) {
-      const vec2 closest = where_.segments()[index].closest_point(s_.position);
+      const segment& wall = where_.segments()[index];
+      const vec2 closest = wall.closest_point(s_.position);
       const vec2 offset = closest - s_.position;
       const double distance = offset.norm();
       if (distance > station::segment_reach_m || distance < 1e-9) continue;
+      if (closest == wall.a || closest == wall.b) {
+        const auto seen = corners.begin() + static_cast<std::ptrdiff_t>(corner_count);
+        if (std::find(corners.begin(), seen, closest) != seen) continue;
+        if (corner_count < corners.size()) corners[corner_count++] = closest;
+      }
       const vec2 n = offset / distance;
       const double gap = distance - radius;
       acceleration -= n * (settings_.wall_strength * std::exp(-gap / settings_.wall_range_m));
@@ -690,6 +714,8 @@ class stepper {
   /// Watchdog: no progress for give_up_s means the route is blocked; choose again.
   void watch_progress() {
     s_.distance_to_goal_m = goal_distance();
+    // A point of one's own (seat, slot, spot) makes distances to it incomparable with others'.
+    s_.route = self_.has_point ? -1 : self_.field;
     if (is_waiting(s_.doing)) {
       self_.stalled_s = 0.0;
       self_.best_distance_m = s_.distance_to_goal_m;

@@ -46,6 +46,8 @@ struct behaviour_settings {
   /// A pedestrian that wants to walk but has stood still this long, pressed against others
   /// who stand still too, yields to the one nearest its goal (see step_pedestrian).
   double yield_after_s = 1.0;
+  /// Speed at which a yielding pedestrian steps back from the one it gives way to.
+  double yield_step_back_mps = 0.3;
 };
 
 /// Creates pedestrian `id` at `position`, drawing its appearance and agenda from its own RNG
@@ -90,11 +92,14 @@ pedestrian make_flow_pedestrian(int id, std::uint64_t run_seed, const vec2& posi
 /// social-force velocity (an incremental 2-D linear program, as RVO2 solves its ORCA
 /// half-planes), so no two discs overlap and no one crosses a wall, by construction.
 ///
+/// Merging: walkers on the same route keep their headway only to those nearer the goal
+/// (ties: lower id), so two converging on a doorway do not both stop for each other.
+///
 /// Arches: a pedestrian that has wanted to walk but stood still for yield_after_s, pressed
-/// against others ahead who stand still too, yields (stops pushing) unless it is the one of
-/// them nearest its goal (ties: lowest id). Decided from the snapshot only, so it is
-/// deterministic; one member of every arch keeps pushing, its repulsion moves the others
-/// aside, and the arch breaks.
+/// against others ahead who stand still too, yields (steps back at yield_step_back_mps,
+/// ignoring the crowd's repulsion) unless it is the one of them nearest its goal (ties:
+/// lowest id). Decided from the snapshot only, so it is deterministic; one member of every
+/// arch keeps pushing, the others give it room, and the arch breaks.
 std::optional<pedestrian> step_pedestrian(const station& where, const snapshot& previous,
                                           const pedestrian& current,
                                           const behaviour_settings& settings,

@@ -7,8 +7,7 @@ namespace argus::world {
 layout bottleneck_room_layout(double exit_width_m) {
   // Centred between two navigation cells' centre lines (y = 6), as the YAML experiments are;
   // an exit under 0.9 m leaves no free cell there (cells are 0.5 m, blocked within 0.2 m of a
-  // wall), so it is centred on a cell's centre line (y = 6.25) instead. (At 1.0 m centred on
-  // 6.25, one walker of 120 circles in front of the exit for good: bench/RESULTS.md.)
+  // wall), so it is centred on a cell's centre line (y = 6.25) instead.
   const double centre = exit_width_m < 0.9 ? 6.25 : 6.0;
   const double low = centre - exit_width_m / 2.0;
   const double high = centre + exit_width_m / 2.0;

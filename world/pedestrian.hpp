@@ -92,6 +92,9 @@ struct pedestrian_state {
   int seat = -1;
   /// Walking distance left to the current goal, metres.
   double distance_to_goal_m = 0.0;
+  /// The distance field it descends (station::target), -1 when none: walkers on the same
+  /// route compare distance_to_goal_m to know who is ahead.
+  int route = -1;
   /// Incremented at every goal change, so observers can tell goals apart.
   std::uint32_t goal_serial = 0;
 

@@ -111,8 +111,9 @@ class station {
   /// Walking distance from `p` to target `field`, in metres (+inf where unreachable).
   double distance_to(int field, const vec2& p) const;
 
-  /// Unit direction of steepest descent of target `field` at `p`: the way to walk. Zero at
-  /// the target.
+  /// Unit direction of steepest descent of target `field` at `p`: the way to walk, the
+  /// field's gradient at the cell centres around `p` interpolated bilinearly (continuous
+  /// between cells, up to walls and jambs). Zero at the target.
   vec2 direction_to(int field, const vec2& p) const;
 
   /// The region containing `p` (the first listed), or nullptr.

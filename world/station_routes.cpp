@@ -1,0 +1,151 @@
+// The station's route queries: walking distance and the way to walk, read off a target's
+// distance field between the navigation grid's cell centres.
+
+#include <cmath>
+#include <limits>
+
+#include "world/station.hpp"
+
+namespace argus::world {
+
+namespace {
+
+constexpr float unreachable = std::numeric_limits<float>::infinity();
+
+/// The grid direction (station's 8-neighbour numbering: 0 = +x, counter-clockwise) of a step.
+int direction_of(int dx, int dy) {
+  constexpr int table[3][3] = {{5, 6, 7}, {4, -1, 0}, {3, 2, 1}};
+  return table[dy + 1][dx + 1];
+}
+
+}  // namespace
+
+float station::field_at(int field, int cx, int cy) const {
+  if (cx < 0 || cy < 0 || cx >= grid_w_ || cy >= grid_h_) return unreachable;
+  return fields_[field][cy * grid_w_ + cx];
+}
+
+double station::distance_to(int field, const vec2& p) const {
+  const int c = cell_index(p);
+  const int cx = c % grid_w_;
+  const int cy = c / grid_w_;
+  double best = std::numeric_limits<double>::infinity();
+  for (int dy = -1; dy <= 1; ++dy) {
+    for (int dx = -1; dx <= 1; ++dx) {
+      const float v = field_at(field, cx + dx, cy + dy);
+      if (v == unreachable) continue;
+      const vec2 centre{(cx + dx + 0.5) * settings_.cell_m, (cy + dy + 0.5) * settings_.cell_m};
+      if (near_wall_[c] && !line_clear(p, centre)) continue;
+      best = std::min(best, static_cast<double>(v) + (centre - p).norm());
+    }
+  }
+  return best;
+}
+
+vec2 station::direction_to(int field, const vec2& p) const {
+  const double cell = settings_.cell_m;
+  // Bilinear interpolation between the four surrounding cell centres gives a smooth route
+  // direction instead of the grid's eight compass directions.
+  const double gx = p.x() / cell - 0.5;
+  const double gy = p.y() / cell - 0.5;
+  const int x0 = static_cast<int>(std::floor(gx));
+  const int y0 = static_cast<int>(std::floor(gy));
+  const double tx = gx - x0;
+  const double ty = gy - y0;
+  // Corner k of the stencil is cell (x0 + k % 2, y0 + k / 2).
+  double f[4];
+  for (int k = 0; k < 4; ++k) f[k] = field_at(field, x0 + k % 2, y0 + k / 2);
+  auto centre_of = [&](int k) {
+    return vec2{(x0 + k % 2 + 0.5) * cell, (y0 + k / 2 + 0.5) * cell};
+  };
+  // The corners on this side of every wall: the one whose cell holds `p` (or, where that cell
+  // is blocked, as walkers at a wall often stand, the nearest finite corner in sight) and those
+  // joined to it by an open grid edge.
+  int base = (ty < 0.5 ? 0 : 2) + (tx < 0.5 ? 0 : 1);
+  if (!std::isfinite(f[base])) {
+    base = -1;
+    double nearest = std::numeric_limits<double>::infinity();
+    for (int k = 0; k < 4; ++k) {
+      const double d = (centre_of(k) - p).norm();
+      if (std::isfinite(f[k]) && d < nearest && line_clear(p, centre_of(k))) {
+        nearest = d;
+        base = k;
+      }
+    }
+  }
+  // The gradient at each usable corner by central differences (one-sided beside blocked
+  // floor), interpolated bilinearly: continuous between cells. Differentiating the bilinear
+  // interpolant instead flips the cross component on every cell centre line, so a walker on a
+  // valley's floor (the line into a doorway) was sent at one jamb, then the other, and a slow
+  // one stood there for good.
+  vec2 gradient = vec2::Zero();
+  if (base >= 0) {
+    const int base_cell = (y0 + base / 2) * grid_w_ + x0 + base % 2;
+    double weight_sum = 0.0;
+    for (int k = 0; k < 4; ++k) {
+      if (!std::isfinite(f[k])) continue;
+      if (k != base &&
+          (edge_blocked_[base_cell] & (1u << direction_of(k % 2 - base % 2, k / 2 - base / 2)))) {
+        continue;
+      }
+      const int cx = x0 + k % 2;
+      const int cy = y0 + k / 2;
+      const auto open = edge_blocked_[cy * grid_w_ + cx];
+      auto slope = [&](int dx, int dy) {
+        const double ahead =
+            (open & (1u << direction_of(dx, dy))) ? unreachable : field_at(field, cx + dx, cy + dy);
+        const double behind = (open & (1u << direction_of(-dx, -dy)))
+                                  ? unreachable
+                                  : field_at(field, cx - dx, cy - dy);
+        if (std::isfinite(ahead) && std::isfinite(behind)) return (ahead - behind) / (2.0 * cell);
+        if (std::isfinite(ahead)) return (ahead - f[k]) / cell;
+        if (std::isfinite(behind)) return (f[k] - behind) / cell;
+        return 0.0;
+      };
+      const double weight = (k % 2 ? tx : 1.0 - tx) * (k / 2 ? ty : 1.0 - ty);
+      gradient += weight * vec2{slope(1, 0), slope(0, 1)};
+      weight_sum += weight;
+    }
+    if (weight_sum > 1e-6) gradient /= weight_sum;
+  }
+  const double norm = gradient.norm();
+  if (norm > 0.3) return -gradient / norm;
+  // At saddles and where no corner is in sight: the slope-weighted mean direction to the
+  // visible cells nearby that lie lower than the field here. Every such cell contributes, so
+  // equally good neighbours (the three ahead in a corridor) balance instead of the first in
+  // scan order winning and pointing the walk into a wall.
+  const int c = cell_index(p);
+  const int cx = c % grid_w_;
+  const int cy = c / grid_w_;
+  for (int r = 1; r <= 3; ++r) {
+    // The field here: the best visible cell plus the straight walk to it.
+    double here = std::numeric_limits<double>::infinity();
+    for (int y = cy - r; y <= cy + r; ++y) {
+      for (int x = cx - r; x <= cx + r; ++x) {
+        const double v = field_at(field, x, y);
+        if (!std::isfinite(v)) continue;
+        const vec2 centre{(x + 0.5) * cell, (y + 0.5) * cell};
+        const double d = (centre - p).norm();
+        if (v + d < here && line_clear(p, centre)) here = v + d;
+      }
+    }
+    if (!std::isfinite(here)) continue;
+    vec2 sum = vec2::Zero();
+    for (int y = cy - r; y <= cy + r; ++y) {
+      for (int x = cx - r; x <= cx + r; ++x) {
+        const double v = field_at(field, x, y);
+        if (!std::isfinite(v) || v >= here) continue;
+        const vec2 centre{(x + 0.5) * cell, (y + 0.5) * cell};
+        const vec2 to = centre - p;
+        const double d = to.norm();
+        if (d < 1e-9 || !line_clear(p, centre)) continue;
+        const double slope = (here - v) / d;
+        sum += to / d * (slope * slope * slope * slope);
+      }
+    }
+    if (sum.norm() > 1e-12) return sum.normalized();
+  }
+  return vec2::Zero();
+}
+
+}  // namespace argus::world
