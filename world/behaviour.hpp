@@ -35,6 +35,10 @@ struct behaviour_settings {
   /// (before touching someone in one's way) over this time, the collision-free speed model's
   /// V(s) = min(v0, s / T) (Tordeux, Chraibi & Seyfried 2016, as JuPedSim uses it).
   double headway_s = 0.1;
+  /// Someone coming the other way within this distance ahead, and within body contact plus
+  /// the margin across one's path, makes one step aside (to the right when head on).
+  double sidestep_horizon_m = 2.0;
+  double sidestep_margin_m = 0.3;
   /// Within this distance of a point target, steer straight at it instead of along the field.
   double direct_steering_m = 3.0;
   /// A walking pedestrian whose distance to its goal has not dropped by `progress_m` for
