@@ -607,7 +607,7 @@ class stepper {
     vec2 repulsion = vec2::Zero();
     double nearest_ahead_m = std::numeric_limits<double>::infinity();
     vec2 sidestep = vec2::Zero();
-    previous_.for_each_near(s_.position, [&](const pedestrian_state& other) {
+    previous_.for_each_near(s_.position, [&](const neighbour& other) {
       if (other.id == s_.id) return;
       const vec2 offset = other.position - s_.position;
       // Most of the 3 x 3 cells' people are out of reach: reject them before the sqrt.

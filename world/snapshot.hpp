@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "world/event.hpp"
+#include "world/neighbour.hpp"
 #include "world/pedestrian.hpp"
 
 namespace argus::world {
@@ -42,7 +43,7 @@ class snapshot {
   /// Events of this tick, by pedestrian id.
   std::span<const event> events() const noexcept { return events_; }
 
-  /// Calls `visit(const pedestrian_state&)` for every pedestrian in the 3 x 3 index cells
+  /// Calls `visit(const neighbour&)` for every pedestrian in the 3 x 3 index cells
   /// around `p` (a superset of those within neighbour_cell_m), in an order that depends only
   /// on the snapshot's content.
   template <class Visitor>
@@ -54,7 +55,7 @@ class snapshot {
       const int x0 = std::max(0, cx - 1);
       const int x1 = std::min(grid_w_ - 1, cx + 1);
       for (std::uint32_t k = cell_start_[row + x0]; k < cell_start_[row + x1 + 1]; ++k) {
-        visit(pedestrians_[cell_items_[k]]);
+        visit(neighbours_[k]);
       }
     }
   }
@@ -85,11 +86,10 @@ class snapshot {
   std::vector<event> events_;
   int grid_w_ = 1;
   int grid_h_ = 1;
-  // CSR neighbour index: cell c holds cell_items_[cell_start_[c] .. cell_start_[c + 1]),
-  // indices into pedestrians_ in id order; a row's cells are contiguous, so one range spans
-  // three cells.
+  // CSR neighbour index: cell c holds neighbours_[cell_start_[c] .. cell_start_[c + 1]), in id
+  // order; a row's cells are contiguous, so one range spans three cells.
   std::vector<std::uint32_t> cell_start_;
-  std::vector<std::uint32_t> cell_items_;
+  std::vector<neighbour> neighbours_;
   std::vector<std::vector<std::pair<std::uint64_t, int>>> queues_;
   std::vector<int> seat_holder_;
 };

@@ -52,9 +52,23 @@ vec2 station::direction_to(int field, const vec2& p) const {
   const int y0 = static_cast<int>(std::floor(gy));
   const double tx = gx - x0;
   const double ty = gy - y0;
+  // The field on the 4 x 4 cells around the stencil, patch[j][i] = cell (x0 - 1 + i, y0 - 1 + j),
+  // read in one go before anything depends on it: the four rows are four cache lines of a large
+  // array, and loads issued together miss together instead of one after another.
+  float patch[4][4];
+  if (x0 >= 1 && y0 >= 1 && x0 + 2 < grid_w_ && y0 + 2 < grid_h_) {
+    const float* row = fields_[field].data() + (y0 - 1) * grid_w_ + (x0 - 1);
+    for (int j = 0; j < 4; ++j, row += grid_w_) {
+      for (int i = 0; i < 4; ++i) patch[j][i] = row[i];
+    }
+  } else {
+    for (int j = 0; j < 4; ++j) {
+      for (int i = 0; i < 4; ++i) patch[j][i] = field_at(field, x0 - 1 + i, y0 - 1 + j);
+    }
+  }
   // Corner k of the stencil is cell (x0 + k % 2, y0 + k / 2).
   double f[4];
-  for (int k = 0; k < 4; ++k) f[k] = field_at(field, x0 + k % 2, y0 + k / 2);
+  for (int k = 0; k < 4; ++k) f[k] = patch[1 + k / 2][1 + k % 2];
   auto centre_of = [&](int k) {
     return vec2{(x0 + k % 2 + 0.5) * cell, (y0 + k / 2 + 0.5) * cell};
   };
@@ -92,11 +106,12 @@ vec2 station::direction_to(int field, const vec2& p) const {
       const int cy = y0 + k / 2;
       const auto open = edge_blocked_[cy * grid_w_ + cx];
       auto slope = [&](int dx, int dy) {
+        const int i = 1 + k % 2;
+        const int j = 1 + k / 2;
         const double ahead =
-            (open & (1u << direction_of(dx, dy))) ? unreachable : field_at(field, cx + dx, cy + dy);
-        const double behind = (open & (1u << direction_of(-dx, -dy)))
-                                  ? unreachable
-                                  : field_at(field, cx - dx, cy - dy);
+            (open & (1u << direction_of(dx, dy))) ? unreachable : patch[j + dy][i + dx];
+        const double behind =
+            (open & (1u << direction_of(-dx, -dy))) ? unreachable : patch[j - dy][i - dx];
         if (std::isfinite(ahead) && std::isfinite(behind)) return (ahead - behind) / (2.0 * cell);
         if (std::isfinite(ahead)) return (ahead - f[k]) / cell;
         if (std::isfinite(behind)) return (f[k] - behind) / cell;

@@ -101,7 +101,7 @@ class crowd_run : public testing::Test {
       s.min_population = std::min(s.min_population, now.pedestrians().size());
       s.max_population = std::max(s.max_population, now.pedestrians().size());
       for (const auto& p : now.pedestrians()) {
-        now.for_each_near(p.position, [&](const pedestrian_state& o) {
+        now.for_each_near(p.position, [&](const neighbour& o) {
           if (o.id <= p.id) return;
           const double gap = (o.position - p.position).norm() - p.radius_m() - o.radius_m();
           if (gap > 1.0) return;

@@ -36,7 +36,7 @@ TEST(snapshot, neighbours_cover_two_metres) {
   snapshot s(penn(), 1, std::chrono::duration<double>{0.0},
              {at(1, 100, 50), at(2, 101.9, 50), at(3, 100, 51.95), at(4, 104.5, 50)});
   std::vector<int> seen;
-  s.for_each_near({100.0, 50.0}, [&](const pedestrian_state& p) { seen.push_back(p.id); });
+  s.for_each_near({100.0, 50.0}, [&](const neighbour& p) { seen.push_back(p.id); });
   std::sort(seen.begin(), seen.end());
   EXPECT_EQ(seen, (std::vector<int>{1, 2, 3}));
 }
