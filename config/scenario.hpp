@@ -211,6 +211,20 @@ struct sensing_settings {
   /// Pixel sensing: trackers follow the camera's own pan, tilt and zoom between frames
   /// (vision::tracker_settings::ego_motion); false, the default, is the paper's tracker.
   bool ego_motion = false;
+  /// Pixel sensing: a tracker re-takes its model from its own camera's pixels once it has held
+  /// the target for a few frames and her box has changed size (vision/signature_update.hpp);
+  /// false, the default, is the paper's tracker, which keeps the signature it was given.
+  bool signature_update = false;
+  /// Pixel sensing: a target looked for in the whole frame (a lost track, a bidder's first
+  /// look) is taken only if it scores at least this much above the best other region there,
+  /// a look-alike (vision::tracker_settings::reacquire_margin); 0, the default, is the paper's
+  /// tracker, which takes the first region above rho.
+  double reacquire_margin = 0.0;
+  /// Pixel sensing: a lost track is looked for only around its last box, in a window that grows
+  /// by a box size each frame, for this many frames before the whole frame
+  /// (vision::tracker_settings::local_search_frames); 0, the default, is the paper's tracker,
+  /// which looks in the whole frame at once.
+  int local_search_frames = 0;
   friend bool operator==(const sensing_settings&, const sensing_settings&) = default;
 };
 

@@ -22,8 +22,13 @@ namespace {
 // The keys each mapping allows, in schema order (the order "expected one of" lists them).
 constexpr std::array<std::string_view, 9> scenario_keys{
     "name", "run", "world", "cameras", "network", "controller", "sensing", "tasks", "faults"};
-constexpr std::array<std::string_view, 4> sensing_keys{"mode", "sensor_model", "tracker_scales",
-                                                       "ego_motion"};
+constexpr std::array<std::string_view, 7> sensing_keys{"mode",
+                                                       "sensor_model",
+                                                       "tracker_scales",
+                                                       "ego_motion",
+                                                       "signature_update",
+                                                       "reacquire_margin",
+                                                       "local_search_frames"};
 constexpr std::array<std::string_view, 6> run_keys{"seed",  "duration", "tick",
                                                    "speed", "threads",  "output_dir"};
 constexpr std::array<std::string_view, 7> world_keys{
@@ -449,6 +454,9 @@ class scenario_parser {
     sensing.read("sensor_model", out.sensor_model);
     sensing.read("tracker_scales", out.scales);
     sensing.read("ego_motion", out.ego_motion);
+    sensing.read("signature_update", out.signature_update);
+    sensing.read("reacquire_margin", out.reacquire_margin, value_bounds::closed(0.0, 1.0));
+    sensing.read("local_search_frames", out.local_search_frames, value_bounds::closed(0, 10'000));
   }
 
   void read_tasks(const YAML::Node& node, const std::vector<camera_settings>& cameras,

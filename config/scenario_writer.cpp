@@ -253,6 +253,9 @@ std::string to_yaml(const scenario& s) {
   out.entry(1, "sensor_model", quoted(s.sensing.sensor_model));
   out.entry(1, "tracker_scales", yaml_name(s.sensing.scales));
   out.entry(1, "ego_motion", boolean(s.sensing.ego_motion));
+  out.entry(1, "signature_update", boolean(s.sensing.signature_update));
+  out.entry(1, "reacquire_margin", number(s.sensing.reacquire_margin));
+  out.entry(1, "local_search_frames", fmt::format("{}", s.sensing.local_search_frames));
 
   out.line(0, s.tasks.empty() ? "tasks: []" : "tasks:");
   for (const auto& each : s.tasks) out.line(1, task(each));

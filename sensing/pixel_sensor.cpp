@@ -16,6 +16,9 @@ vision::tracker_settings pixel_sensor::settings_for(const config::sensing_settin
                              ? vision::scale_rule::paper
                              : vision::scale_rule::target;
   settings.ego_motion = sensing.ego_motion;
+  settings.update_signature = sensing.signature_update;
+  settings.reacquire_margin = sensing.reacquire_margin;
+  settings.local_search_frames = sensing.local_search_frames;
   return settings;
 }
 

@@ -9,13 +9,24 @@
 namespace argus::vision {
 
 tracker::tracker(color_histogram target, tracker_settings settings)
-    : target_(std::move(target)), settings_(settings) {
+    : target_(std::move(target)), model_(target_), settings_(settings) {
   // nop
 }
 
 void tracker::start(const cv::Rect& box) {
   box_ = box;
   lost_ = false;
+  lost_frames_ = 0;
+  // The signature was taken from this box: the model is her at this size already.
+  confirmed_ = 0;
+  model_height_ = box.height;
+}
+
+void tracker::update_model(const cv::Mat& bin_indices, const cv::Rect& box) {
+  if (!settings_.update_signature) return;
+  if (!model_due(confirmed_, box.height, model_height_, settings_.update)) return;
+  model_ = blended_model(target_, bin_indices, box, settings_.update);
+  model_height_ = box.height;
 }
 
 std::optional<track_observation> tracker::find_in(const cv::Mat& bin_indices,
@@ -24,14 +35,27 @@ std::optional<track_observation> tracker::find_in(const cv::Mat& bin_indices,
   if (window.empty()) return std::nullopt;
   const cv::Mat indices = bin_indices(window);
   auto image =
-      color_histogram::of_bin_indices(indices, {0, 0, window.width, window.height}, target_.bins());
+      color_histogram::of_bin_indices(indices, {0, 0, window.width, window.height}, model_.bins());
   std::optional<double> area;
   if (box_) area = static_cast<double>(box_->area());
-  auto b = backproject(indices, ratio_histogram(target_, image, area));
+  auto b = backproject(indices, ratio_histogram(model_, image, area));
   localizer_ = multiscale_localizer(localizing);
-  auto found = localizer_.localize(b, histogram_scorer(indices, target_));
+  auto found = localizer_.localize(b, histogram_scorer(indices, model_));
   if (found.empty()) return std::nullopt;
+  // A region only a little better than a look-alike elsewhere is as likely to be the other.
+  if (found.size() > 1) {
+    double other = 0.0;
+    for (std::size_t i = 1; i < found.size(); ++i) other = std::max(other, found[i].score);
+    if (found.front().score < other + settings_.reacquire_margin) return std::nullopt;
+  }
   return track_observation{true, found.front().box() + window.tl(), found.front().score};
+}
+
+std::optional<track_observation> tracker::find_in_frame(const cv::Mat& bin_indices,
+                                                        const localizer_settings& localizing) {
+  auto whole = localizing;
+  if (settings_.reacquire_margin > 0.0) whole.max_regions = 2;
+  return find_in(bin_indices, cv::Rect(0, 0, bin_indices.cols, bin_indices.rows), whole);
 }
 
 void tracker::follow_camera(const ptz_state& from, const ptz_state& to, const frame_size& frame) {
@@ -53,6 +77,7 @@ track_observation tracker::update(const cv::Mat& bgr) {
   const auto localizing =
       localizer_settings_for(settings_.scales, size, bgr.rows, settings_.rho, 1);
   std::optional<track_observation> seen;
+  bool in_window = false;
   if (box_ && !lost_) {
     auto tracking = localizing;
     if (settings_.ego_motion) tracking.expected_scale = kernel_size_for(cv::Size2d(box_->size()));
@@ -60,14 +85,34 @@ track_observation tracker::update(const cv::Mat& bgr) {
     const int dy = static_cast<int>(std::lround(settings_.search_margin * box_->height));
     const cv::Rect window(box_->x - dx, box_->y - dy, box_->width + 2 * dx, box_->height + 2 * dy);
     seen = find_in(indices, window & frame, tracking);
+    in_window = seen.has_value();
+  } else if (box_ && lost_frames_ < settings_.local_search_frames) {
+    // Where she was lost she is likely to reappear (from behind someone, or as the camera
+    // stops); the whole frame holds look-alikes.
+    const int grow = 2 + lost_frames_;
+    const int dx = static_cast<int>(std::lround(settings_.search_margin * grow * box_->width));
+    const int dy = static_cast<int>(std::lround(settings_.search_margin * grow * box_->height));
+    const cv::Rect window(box_->x - dx, box_->y - dy, box_->width + 2 * dx, box_->height + 2 * dy);
+    seen = find_in(indices, window & frame, localizing);
   }
-  if (!seen && (settings_.search_whole_frame || !box_)) seen = find_in(indices, frame, localizing);
+  if (!seen && box_ && lost_frames_ < settings_.local_search_frames) {
+    lost_ = true;
+    ++lost_frames_;
+    confirmed_ = 0;
+    return {false, *box_, 0.0};
+  }
+  if (!seen && (settings_.search_whole_frame || !box_)) seen = find_in_frame(indices, localizing);
   if (!seen) {
     lost_ = true;
+    ++lost_frames_;
+    confirmed_ = 0;
     return {false, box_.value_or(cv::Rect{}), 0.0};
   }
   lost_ = false;
+  lost_frames_ = 0;
   box_ = seen->box;
+  confirmed_ = in_window ? confirmed_ + 1 : 0;
+  update_model(indices, seen->box);
   return *seen;
 }
 

@@ -12,6 +12,7 @@
 #include "vision/frame_size.hpp"
 #include "vision/multiscale_localizer.hpp"
 #include "vision/ptz_camera.hpp"
+#include "vision/signature_update.hpp"
 
 namespace argus::vision {
 
@@ -41,6 +42,18 @@ struct tracker_settings {
   /// the poses), and of the kernel sizes scoring near the best the one nearest that box's
   /// size is taken, not the largest. False: the paper's tracker, which knows no poses.
   bool ego_motion = false;
+  /// Re-take the model the tracker looks for from the camera's own pixels (signature_update).
+  /// Off: the paper's tracker, which looks for the signature it was given all along.
+  bool update_signature = false;
+  /// When and how it re-takes the model.
+  signature_update_settings update;
+  /// In a whole-frame search, the region found is taken only if its score exceeds the best
+  /// other region's (a look-alike) by this much; 0: the paper's, the first region above rho.
+  double reacquire_margin = 0.0;
+  /// A lost track is looked for only in a window around its last box, grown by one more box
+  /// size each frame, for this many frames before the whole frame is searched; 0: the paper's,
+  /// the whole frame at once.
+  int local_search_frames = 0;
 };
 
 /// Follows one target frame to frame: backprojects its histogram in a window around the last
@@ -72,15 +85,30 @@ class tracker {
   /// The target's signature.
   const color_histogram& target() const noexcept { return target_; }
 
+  /// What the tracker looks for: the signature, or with update_signature the signature blended
+  /// with her pixels as this camera last saw her on a confirmed track.
+  const color_histogram& model() const noexcept { return model_; }
+
  private:
   std::optional<track_observation> find_in(const cv::Mat& bin_indices, const cv::Rect& window,
                                            const localizer_settings& localizing);
+  std::optional<track_observation> find_in_frame(const cv::Mat& bin_indices,
+                                                 const localizer_settings& localizing);
+
+  void update_model(const cv::Mat& bin_indices, const cv::Rect& box);
 
   color_histogram target_;
+  color_histogram model_;
   tracker_settings settings_;
   multiscale_localizer localizer_;
   std::optional<cv::Rect> box_;
   bool lost_ = true;
+  // Frames in a row the track has been lost.
+  int lost_frames_ = 0;
+  // Frames in a row found in the search window (a whole-frame find does not count).
+  int confirmed_ = 0;
+  // The box height the model was last taken at (0: never; the signature's own is unknown).
+  int model_height_ = 0;
 };
 
 /// The child states of PerformingTask (Fig. 10, inset), plus `failed` once Search times out.

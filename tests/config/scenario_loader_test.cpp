@@ -303,6 +303,25 @@ TEST(scenario_loader, trackers_know_no_poses_and_cameras_zoom_in_track_unless_to
   EXPECT_FALSE(ours.controller.zoom_in_track);
 }
 
+// The pixel trackers' reacquisition and model: the paper's unless told.
+TEST(scenario_loader, trackers_keep_their_signature_and_search_the_whole_frame_unless_told) {
+  const auto paper = parse_scenario("name: a\n", "a.yaml");
+  EXPECT_FALSE(paper.sensing.signature_update);
+  EXPECT_EQ(paper.sensing.reacquire_margin, 0.0);
+  EXPECT_EQ(paper.sensing.local_search_frames, 0);
+  const auto ours = parse_scenario(
+      "sensing: {signature_update: true, reacquire_margin: 0.05, local_search_frames: 30}\n",
+      "a.yaml");
+  EXPECT_TRUE(ours.sensing.signature_update);
+  EXPECT_EQ(ours.sensing.reacquire_margin, 0.05);
+  EXPECT_EQ(ours.sensing.local_search_frames, 30);
+  EXPECT_FALSE(
+      problems_of([] { parse_scenario("sensing: {reacquire_margin: 1.5}\n", "a.yaml"); }).empty());
+  EXPECT_FALSE(problems_of([] {
+                 parse_scenario("sensing: {local_search_frames: -1}\n", "a.yaml");
+               }).empty());
+}
+
 TEST(scenario_loader, tracker_scales_default_to_the_target_and_read_paper) {
   EXPECT_EQ(parse_scenario("name: a\n", "a.yaml").sensing.scales, tracker_scales::target);
   EXPECT_EQ(parse_scenario("sensing: {tracker_scales: paper}\n", "a.yaml").sensing.scales,

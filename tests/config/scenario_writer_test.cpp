@@ -87,6 +87,9 @@ TEST(scenario_writer, round_trips_awkward_values_exactly) {
   original.tasks.push_back(by_entry);
   original.controller.strategy = control_strategy::oracle;
   original.sensing.ego_motion = true;
+  original.sensing.signature_update = true;
+  original.sensing.reacquire_margin = 0.05;
+  original.sensing.local_search_frames = 30;
   original.controller.zoom_in_track = false;
   expect_same(round_trip(original), original);
 }

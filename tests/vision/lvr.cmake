@@ -10,6 +10,8 @@ set(argus_vision_lvr_tests
   tracker_test
   fixate_zoom_test
   ego_motion_test
+  signature_update_test
+  reacquisition_test
   relevance_test
   emulated_sensor_test
   emulated_sensor_fidelity_test
