@@ -24,6 +24,9 @@ void tracker::start(const cv::Rect& box) {
 
 void tracker::update_model(const cv::Mat& bin_indices, const cv::Rect& box) {
   if (!settings_.update_signature) return;
+  // A signature from another camera is taken as hers at the size it was first found at: a
+  // whole-frame find is as likely a look-alike, whom a model re-taken at once would cement.
+  if (model_height_ == 0) model_height_ = box.height;
   if (!model_due(confirmed_, box.height, model_height_, settings_.update)) return;
   model_ = blended_model(target_, bin_indices, box, settings_.update);
   model_height_ = box.height;

@@ -107,7 +107,7 @@ class tracker {
   int lost_frames_ = 0;
   // Frames in a row found in the search window (a whole-frame find does not count).
   int confirmed_ = 0;
-  // The box height the model was last taken at (0: never; the signature's own is unknown).
+  // The box height the model was last taken at (0: a signature from a message, not yet found).
   int model_height_ = 0;
 };
 

@@ -92,5 +92,31 @@ TEST(signature_update, a_tracker_that_retakes_its_model_keeps_her_through_the_zo
   }
 }
 
+// A member's tracker starts from a signature another camera sent, and finds its first box in
+// its whole frame, where a look-alike is as likely as she is: that box is not trusted to
+// re-take the model until the track has held it while her size changed (here, a zoom).
+TEST(signature_update, a_signature_from_a_message_is_kept_until_her_size_changes) {
+  auto frame_with = [](int h) {
+    cv::Mat image(240, 320, CV_8UC3, grey);
+    const int w = h / 3;
+    cv::rectangle(image, cv::Rect(160 - w / 2, 120 - h / 2, w, h / 2), red, cv::FILLED);
+    cv::rectangle(image, cv::Rect(160 - w / 2, 120, w, h - h / 2), green, cv::FILLED);
+    return image;
+  };
+  // The sender saw her top as red and her legs as blue; this camera sees green legs.
+  cv::Mat sent(240, 320, CV_8UC3, grey);
+  cv::rectangle(sent, cv::Rect(150, 90, 20, 30), red, cv::FILLED);
+  cv::rectangle(sent, cv::Rect(150, 120, 20, 30), blue, cv::FILLED);
+  const auto signature = color_histogram::of_region(sent, {150, 90, 20, 60}).normalized();
+  tracker_settings settings;
+  settings.update_signature = true;
+  settings.search_whole_frame = true;
+  tracker t(signature, settings);
+  for (int k = 0; k < 10; ++k) ASSERT_TRUE(t.update(frame_with(60)).found);
+  EXPECT_EQ(t.model(), t.target()) << "held ten frames at one size: not re-taken";
+  for (int h = 66; h <= 100; h += 6) ASSERT_TRUE(t.update(frame_with(h)).found);
+  EXPECT_NE(t.model(), t.target()) << "her size changed by 1.4 on a held track: re-taken";
+}
+
 }  // namespace
 }  // namespace argus::vision
