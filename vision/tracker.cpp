@@ -8,6 +8,17 @@
 
 namespace argus::vision {
 
+namespace {
+
+/// `box` widened by `margin` of its width on either side and of its height above and below.
+cv::Rect window_around(const cv::Rect& box, double margin) {
+  const int dx = static_cast<int>(std::lround(margin * box.width));
+  const int dy = static_cast<int>(std::lround(margin * box.height));
+  return {box.x - dx, box.y - dy, box.width + 2 * dx, box.height + 2 * dy};
+}
+
+}  // namespace
+
 tracker::tracker(color_histogram target, tracker_settings settings)
     : target_(std::move(target)), model_(target_), settings_(settings) {
   // nop
@@ -81,30 +92,22 @@ track_observation tracker::update(const cv::Mat& bgr) {
       localizer_settings_for(settings_.scales, size, bgr.rows, settings_.rho, 1);
   std::optional<track_observation> seen;
   bool in_window = false;
+  // A lost track still within local_search_frames is looked for only around its last box.
+  const bool searching_locally = box_ && lost_frames_ < settings_.local_search_frames;
   if (box_ && !lost_) {
     auto tracking = localizing;
     if (settings_.ego_motion) tracking.expected_scale = kernel_size_for(cv::Size2d(box_->size()));
-    const int dx = static_cast<int>(std::lround(settings_.search_margin * box_->width));
-    const int dy = static_cast<int>(std::lround(settings_.search_margin * box_->height));
-    const cv::Rect window(box_->x - dx, box_->y - dy, box_->width + 2 * dx, box_->height + 2 * dy);
-    seen = find_in(indices, window & frame, tracking);
+    seen = find_in(indices, window_around(*box_, settings_.search_margin) & frame, tracking);
     in_window = seen.has_value();
-  } else if (box_ && lost_frames_ < settings_.local_search_frames) {
+  } else if (searching_locally) {
     // Where she was lost she is likely to reappear (from behind someone, or as the camera
-    // stops); the whole frame holds look-alikes.
-    const int grow = 2 + lost_frames_;
-    const int dx = static_cast<int>(std::lround(settings_.search_margin * grow * box_->width));
-    const int dy = static_cast<int>(std::lround(settings_.search_margin * grow * box_->height));
-    const cv::Rect window(box_->x - dx, box_->y - dy, box_->width + 2 * dx, box_->height + 2 * dy);
-    seen = find_in(indices, window & frame, localizing);
+    // stops); the whole frame holds look-alikes. The window grows by a box size a frame.
+    const double margin = settings_.search_margin * (2 + lost_frames_);
+    seen = find_in(indices, window_around(*box_, margin) & frame, localizing);
   }
-  if (!seen && box_ && lost_frames_ < settings_.local_search_frames) {
-    lost_ = true;
-    ++lost_frames_;
-    confirmed_ = 0;
-    return {false, *box_, 0.0};
+  if (!seen && !searching_locally && (settings_.search_whole_frame || !box_)) {
+    seen = find_in_frame(indices, localizing);
   }
-  if (!seen && (settings_.search_whole_frame || !box_)) seen = find_in_frame(indices, localizing);
   if (!seen) {
     lost_ = true;
     ++lost_frames_;

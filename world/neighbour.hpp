@@ -18,6 +18,7 @@ struct alignas(64) neighbour {
   int counter = -1;
   activity doing = activity::walking;
 
+  neighbour() = default;
   explicit neighbour(const pedestrian_state& p)
       : position(p.position),
         velocity(p.velocity),

@@ -27,13 +27,11 @@ snapshot::snapshot(const station& where, std::uint64_t tick, std::chrono::durati
     ++cell_start_[cell_of[i] + 1];
   }
   for (std::size_t c = 0; c < cells; ++c) cell_start_[c + 1] += cell_start_[c];
-  std::vector<std::uint32_t> items(pedestrians_.size());
+  neighbours_.resize(pedestrians_.size());
   std::vector<std::uint32_t> fill(cell_start_.begin(), cell_start_.end() - 1);
   for (std::size_t i = 0; i < pedestrians_.size(); ++i) {
-    items[fill[cell_of[i]]++] = static_cast<std::uint32_t>(i);
+    neighbours_[fill[cell_of[i]]++] = neighbour(pedestrians_[i]);
   }
-  neighbours_.reserve(items.size());
-  for (const auto i : items) neighbours_.emplace_back(pedestrians_[i]);
   queues_.assign(where.counter_count(), {});
   seat_holder_.assign(where.seats().size(), -1);
   for (const auto& p : pedestrians_) {
