@@ -38,7 +38,7 @@ std::vector<controller::look_result> emulated_looks::look(
     }
     controller::look_result r{l.task, false, {}, 0.0};
     if (best >= 0) {
-      const auto observed = sensor_.look_for(best, frame, where, view);
+      const auto observed = sensor_.look_for(best, frame, seen, view);
       if (observed.found) {
         r.found = true;
         r.box = cv::Rect2d(observed.detection.box);

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <deque>
+#include <span>
 #include <vector>
 
 #include "opencv2/core.hpp"
@@ -94,6 +95,9 @@ class emulated_sensor {
   /// from the most similar other pedestrian in view, that one's box is reported instead.
   sensor_observation look_for(int target_id, const world::snapshot& frame,
                               const world::station& where, const camera_view& view);
+  /// look_for() given what the camera sees: `seen` is visible_pedestrians(frame, where, view).
+  sensor_observation look_for(int target_id, const world::snapshot& frame,
+                              std::span<const pedestrian_view> seen, const camera_view& view);
 
   /// P(miss) for a pedestrian with `occlusion` and an image height of `height_px`.
   double miss_probability(double occlusion, double height_px) const;

@@ -101,12 +101,25 @@ Eigen::Matrix3d camera_view::orientation() const noexcept {
 }
 
 std::optional<Eigen::Vector2d> camera_view::project(const Eigen::Vector3d& p) const {
-  const Eigen::Vector3d c = orientation().transpose() * (p - placement.position_m);
+  return camera_projection(*this).project(p);
+}
+
+camera_projection::camera_projection(const camera_view& view)
+    : orientation_(view.orientation()),
+      position_m_(view.placement.position_m),
+      focal_px_(view.focal_px()),
+      width_px_(view.width_px),
+      height_px_(view.height_px) {
+  // nop
+}
+
+std::optional<Eigen::Vector2d> camera_projection::project(const Eigen::Vector3d& p) const {
+  const Eigen::Vector3d c = orientation_.transpose() * (p - position_m_);
   if (c.z() <= 1e-9) return std::nullopt;
-  const double f = focal_px();
+  const double f = focal_px_;
   // Window coordinates put pixel centres at +0.5; OpenCV puts them at integers.
-  return Eigen::Vector2d{0.5 * width_px + f * c.x() / c.z() - 0.5,
-                         0.5 * height_px - f * c.y() / c.z() - 0.5};
+  return Eigen::Vector2d{0.5 * width_px_ + f * c.x() / c.z() - 0.5,
+                         0.5 * height_px_ - f * c.y() / c.z() - 0.5};
 }
 
 Eigen::Vector3d camera_view::back_project(const Eigen::Vector2d& pixel) const {
