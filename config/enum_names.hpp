@@ -89,6 +89,15 @@ constexpr auto yaml_names() {
   return names;
 }
 
+/// Names for the network's `unicast` routing.
+template <>
+struct enum_names<unicast_routing> {
+  static constexpr std::array<enum_entry<unicast_routing>, 2> entries{{
+      {unicast_routing::flood, "flood"},
+      {unicast_routing::reverse_path, "reverse_path"},
+  }};
+};
+
 /// Names for the `merge` rule of the controller.
 template <>
 struct enum_names<merge_rule> {

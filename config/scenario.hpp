@@ -159,6 +159,11 @@ struct camera_settings {
   friend bool operator==(const camera_settings&, const camera_settings&) = default;
 };
 
+/// How a message for one node crosses more than one link (docs/network.md): flooded like a
+/// broadcast, or along the reverse of the path by which the destination's own messages last
+/// came (a route learned from its floods), flooding only when no live route is known.
+enum class unicast_routing { flood, reverse_path };
+
 /// The network model (Table 2, "Network communication parameters").
 struct network_settings {
   double loss_probability = 0.1;
@@ -179,6 +184,7 @@ struct network_settings {
   /// A neighbour not heard for this long (beacons or any message) is given up; longer than
   /// `hello_interval`.
   seconds neighbour_timeout{5.0};
+  unicast_routing unicast = unicast_routing::flood;
   friend bool operator==(const network_settings&, const network_settings&) = default;
 };
 

@@ -59,7 +59,7 @@ constexpr std::array<std::string_view, 8> color_response_keys{
     "enabled", "hue_offset_deg", "saturation_gain", "value_gain", "value_offset", "tint",
     "tone",    "shade"};
 constexpr std::array<std::string_view, 2> dropout_keys{"fraction", "kind"};
-constexpr std::array<std::string_view, 12> network_keys{"loss_probability",
+constexpr std::array<std::string_view, 13> network_keys{"loss_probability",
                                                         "min_delay",
                                                         "max_delay",
                                                         "node_failure_probability",
@@ -70,7 +70,8 @@ constexpr std::array<std::string_view, 12> network_keys{"loss_probability",
                                                         "duplicate_probability",
                                                         "reorder",
                                                         "hello_interval",
-                                                        "neighbour_timeout"};
+                                                        "neighbour_timeout",
+                                                        "unicast"};
 constexpr std::array<std::string_view, 22> controller_keys{"wait_timeout",
                                                            "search_timeout",
                                                            "min_relevance",
@@ -396,6 +397,7 @@ class scenario_parser {
     } else {
       network.read("neighbour_timeout", out.neighbour_timeout, positive);
     }
+    network.read("unicast", out.unicast);
   }
 
   void read_adjacency(const YAML::Node& node, const std::string& path,

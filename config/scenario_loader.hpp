@@ -35,7 +35,8 @@
 ///           node_failure_probability: 0.001, max_hops: 3, message_timeout: 1500 ms,
 ///           communication_range_m: 40, adjacency: [[1, 2], [2, 3]],
 ///           duplicate_probability: 0, reorder: false,
-///           hello_interval: 1 s, neighbour_timeout: 5 s}   # neighbour_timeout > hello_interval
+///           hello_interval: 1 s, neighbour_timeout: 5 s,   # neighbour_timeout > hello_interval
+///           unicast: flood}                               # flood | reverse_path
 /// controller: {wait_timeout: 2 min, search_timeout: 5 min, min_relevance: 0.1,
 ///              heartbeat_interval: 1000 ms, leader_failure_timeout: 3000 ms,
 ///              member_failure_timeout: 5000 ms, auction_relevance_threshold: 0.5,

@@ -222,6 +222,7 @@ std::string to_yaml(const scenario& s) {
   out.entry(1, "reorder", boolean(network.reorder));
   out.entry(1, "hello_interval", duration(network.hello_interval));
   out.entry(1, "neighbour_timeout", duration(network.neighbour_timeout));
+  out.entry(1, "unicast", yaml_name(network.unicast));
 
   const auto& controller = s.controller;
   out.line(0, "controller:");

@@ -19,12 +19,33 @@ flood_router::sighting flood_router::remember(std::uint64_t id, std::uint8_t hop
   return sighting::first;
 }
 
+// A newer message from the origin replaces the route (the older one may lead through a node
+// that has since failed); a copy of the same message over fewer hops shortens it.
+void flood_router::learn_route(const net_message& m, int from) {
+  if (unicast_ != config::unicast_routing::reverse_path || m.origin == self_) return;
+  const auto seq = static_cast<std::uint32_t>(m.id);
+  auto [it, inserted] = routes_.try_emplace(m.origin, route{from, seq, m.hops});
+  if (inserted) return;
+  route& r = it->second;
+  if (seq > r.seq || (seq == r.seq && m.hops < r.hops)) r = route{from, seq, m.hops};
+}
+
+int flood_router::route_to(int origin) const {
+  const auto it = routes_.find(origin);
+  return it == routes_.end() ? 0 : it->second.via;
+}
+
 std::vector<int> flood_router::next_hops(const net_message& m, int from,
                                          const std::vector<int>& live_neighbours) const {
   if (m.hops >= m.max_hops) return {};
-  if (m.destination != broadcast &&
-      std::binary_search(live_neighbours.begin(), live_neighbours.end(), m.destination))
-    return {m.destination};
+  const auto live = [&](int n) {
+    return std::binary_search(live_neighbours.begin(), live_neighbours.end(), n);
+  };
+  if (m.destination != broadcast && live(m.destination)) return {m.destination};
+  if (m.destination != broadcast) {
+    const int via = route_to(m.destination);
+    if (via != 0 && via != from && live(via)) return {via};
+  }
   std::vector<int> out;
   for (int n : live_neighbours)
     if (n != from && n != m.origin) out.push_back(n);
@@ -48,6 +69,7 @@ routing_decision flood_router::receive(const net_message& m, int from,
     ++duplicates_;
     return d;
   }
+  learn_route(m, from);
   // A shorter copy is passed on again, but its controller has it already.
   d.deliver = seen == sighting::first && (m.destination == broadcast || m.destination == self_);
   if (m.destination != self_) d.forward_to = next_hops(m, from, live_neighbours);

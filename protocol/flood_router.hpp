@@ -5,6 +5,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "config/scenario.hpp"
 #include "protocol/net_message.hpp"
 
 namespace argus::protocol {
@@ -26,10 +27,20 @@ struct routing_decision {
 /// every node within `max_hops` of the origin is reached when links lose nothing. A unicast whose
 /// destination is a live neighbour goes over that one link only. A message that cannot reach its
 /// destination within the hop limit is not delivered, as Table 2's "maximum number of hops" asks.
+///
+/// With reverse-path routing, a node also remembers, for every origin it has heard, the
+/// neighbour that brought the origin's latest message over the fewest hops; a unicast to that
+/// origin then goes to that neighbour alone, each relay doing the same, so an answer to a query
+/// flooded over a thousand links crosses a handful instead of being flooded back. Cameras do
+/// not move, so such a route stays good while its next hop is live; with none known, or its
+/// next hop given up, the message is flooded as before. A single path has no spare copies:
+/// each link's loss counts once per hop, where a flood often has another copy on the way.
 class flood_router {
  public:
   /// The router of node `self`, remembering the last `memory` message ids it has seen.
-  explicit flood_router(int self, std::size_t memory = 8192) : self_(self), memory_(memory) {}
+  explicit flood_router(int self, std::size_t memory = 8192,
+                        config::unicast_routing unicast = config::unicast_routing::flood)
+      : self_(self), memory_(memory), unicast_(unicast) {}
 
   /// A message this node sends; `live_neighbours` sorted.
   routing_decision originate(const net_message& m, const std::vector<int>& live_neighbours);
@@ -41,14 +52,27 @@ class flood_router {
   /// Copies dropped because this node had seen the message over as few hops before.
   std::uint64_t duplicates_suppressed() const noexcept { return duplicates_; }
 
+  /// The neighbour through which `origin`'s latest message came over the fewest hops, or 0
+  /// (reverse-path routing only).
+  int route_to(int origin) const;
+
  private:
   enum class sighting { first, fewer_hops, duplicate };
   sighting remember(std::uint64_t id, std::uint8_t hops);
+  void learn_route(const net_message& m, int from);
   std::vector<int> next_hops(const net_message& m, int from,
                              const std::vector<int>& live_neighbours) const;
 
+  struct route {
+    int via = 0;
+    std::uint32_t seq = 0;
+    std::uint8_t hops = 0;
+  };
+
   int self_;
   std::size_t memory_;
+  config::unicast_routing unicast_;
+  std::unordered_map<int, route> routes_;  // origin -> how its latest message came
   std::unordered_map<std::uint64_t, std::uint8_t> seen_;  // id -> fewest hops seen
   std::deque<std::uint64_t> seen_order_;
   std::uint64_t duplicates_ = 0;

@@ -170,5 +170,75 @@ TEST(node_network, a_request_unanswered_within_the_message_timeout_marks_the_pee
   EXPECT_EQ(failures[0].request, lost);
 }
 
+// Cameras on a 3 x 3 grid 10 m apart, range 12 m: each linked to the cameras beside it, not
+// to those diagonally across (14 m).
+//   7 8 9
+//   4 5 6
+//   1 2 3
+config::scenario grid_3x3(config::unicast_routing unicast) {
+  config::scenario s;
+  for (int i = 1; i <= 9; ++i) {
+    config::camera_settings c;
+    c.id = i;
+    c.position = {10.0 * ((i - 1) % 3), 10.0 * ((i - 1) / 3)};
+    s.cameras.push_back(c);
+  }
+  s.network.communication_range_m = 12.0;
+  s.network.unicast = unicast;
+  return s;
+}
+
+// Node 1 floods a query; node 6, three hops away, answers it. Returns the answer's
+// transmissions and whether node 1 got it.
+std::pair<int, bool> answer_to_a_flood(ideal_network& net, std::int64_t from) {
+  net.nodes.at(1).send(broadcast, "query", "");
+  net.run(from, from + 10);
+  EXPECT_FALSE(net.delivered[6].empty());
+  if (net.delivered[6].empty()) return {0, false};
+  net.transmissions.clear();
+  net.delivered[1].clear();
+  net.nodes.at(6).reply(net.delivered[6].back(), "answer", "");
+  net.delivered[6].clear();
+  net.run(from + 10, from + 20);
+  bool got = false;
+  for (const auto& m : net.delivered[1]) got = got || m.kind == "answer";
+  return {net.transmissions["answer"], got};
+}
+
+TEST(node_network, reverse_path_routing_sends_an_answer_back_along_the_querys_path) {
+  ideal_network flooded(grid_3x3(config::unicast_routing::flood));
+  flooded.run(0, 30);
+  const auto [flood_cost, flood_got] = answer_to_a_flood(flooded, 30);
+  ideal_network routed(grid_3x3(config::unicast_routing::reverse_path));
+  routed.run(0, 30);
+  const auto [routed_cost, routed_got] = answer_to_a_flood(routed, 30);
+  EXPECT_TRUE(flood_got);
+  EXPECT_TRUE(routed_got);
+  EXPECT_EQ(routed_cost, 3);  // one link per hop
+  EXPECT_GT(flood_cost, 3);   // the flood covers the grid within three hops
+}
+
+TEST(node_network, reverse_path_routing_floods_when_the_routes_next_hop_is_gone) {
+  auto s = grid_3x3(config::unicast_routing::reverse_path);
+  s.network.max_hops = 5;  // 6-9-8-7-4-1, the way round, is five hops
+  ideal_network net(s);
+  net.run(0, 30);
+  net.nodes.at(1).send(broadcast, "query", "");
+  net.run(30, 40);
+  ASSERT_FALSE(net.delivered[6].empty());
+  const net_message query = net.delivered[6].back();
+  // The query came to node 6 through 3 or 5; both fail, and node 6 gives them up.
+  net.down.insert(3);
+  net.down.insert(5);
+  net.run(40, 40 + 15 * 7);
+  ASSERT_EQ(net.nodes.at(6).live_neighbours(), (std::vector<int>{9}));
+  net.delivered[1].clear();
+  net.nodes.at(6).reply(query, "answer", "");
+  net.run(40 + 15 * 7, 40 + 15 * 8);
+  bool got = false;
+  for (const auto& m : net.delivered[1]) got = got || m.kind == "answer";
+  EXPECT_TRUE(got);
+}
+
 }  // namespace
 }  // namespace argus::protocol
