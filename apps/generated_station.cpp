@@ -172,6 +172,9 @@ std::string scenario_of(const station_plan& p, const std::string& layout_file) {
   }
   w.line("network:");
   w.line("  communication_range_m: 30");
+  w.line("  # An answer goes back along its query's path: flooded over about 15 links per camera,");
+  w.line("  # three hops deep, every bid would cost hundreds of transmissions (docs/network.md).");
+  w.line("  unicast: reverse_path");
   w.line("controller:  # eq. (1) spreads as in penn_station.yaml");
   w.line("  relevance_sigma_fov_deg: 30");
   w.line("  relevance_sigma_pan_deg: 60");
