@@ -42,6 +42,7 @@ TEST(scenario_loader, network_defaults_are_table_2) {
   // given up (the values of the heartbeat and member failure timeout they used to borrow).
   EXPECT_EQ(network.hello_interval, 1s);
   EXPECT_EQ(network.neighbour_timeout, 5s);
+  EXPECT_EQ(network.unicast, unicast_routing::flood);  // every message multi-hop is flooded
 }
 
 // Table 2, controller and at-node parameters, and the eq. (1) spreads.
@@ -149,6 +150,7 @@ TEST(scenario_loader, reads_every_field_of_a_full_scenario) {
   EXPECT_TRUE(network.reorder);
   EXPECT_EQ(network.hello_interval, 750ms);
   EXPECT_EQ(network.neighbour_timeout, 4s);
+  EXPECT_EQ(network.unicast, unicast_routing::reverse_path);
 
   const auto& controller = loaded.controller;
   EXPECT_EQ(controller.wait_timeout, 90s);

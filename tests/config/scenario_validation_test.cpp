@@ -114,6 +114,9 @@ TEST(scenario_validation, bad_enum_names_the_choices) {
                      "expected one of: best_solv, all_solv, bound_solv, got 'best_solve'; "
                      "did you mean "
                      "'best_solv'?"}));
+  EXPECT_EQ(only_problem("network: {unicast: reverse}\n"),
+            (problem{"bad.yaml", 1, 20, "network.unicast",
+                     "expected one of: flood, reverse_path, got 'reverse'"}));
   EXPECT_EQ(only_problem("sensing: {tracker_scales: frame}\n"),
             (problem{"bad.yaml", 1, 27, "sensing.tracker_scales",
                      "expected one of: target, paper, got 'frame'"}));
