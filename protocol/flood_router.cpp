@@ -41,8 +41,8 @@ std::vector<int> flood_router::next_hops(const net_message& m, int from,
   const auto live = [&](int n) {
     return std::binary_search(live_neighbours.begin(), live_neighbours.end(), n);
   };
-  if (m.destination != broadcast && live(m.destination)) return {m.destination};
   if (m.destination != broadcast) {
+    if (live(m.destination)) return {m.destination};
     const int via = route_to(m.destination);
     if (via != 0 && via != from && live(via)) return {via};
   }

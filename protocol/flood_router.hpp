@@ -37,9 +37,10 @@ struct routing_decision {
 /// each link's loss counts once per hop, where a flood often has another copy on the way.
 class flood_router {
  public:
-  /// The router of node `self`, remembering the last `memory` message ids it has seen.
-  explicit flood_router(int self, std::size_t memory = 8192,
-                        config::unicast_routing unicast = config::unicast_routing::flood)
+  /// The router of node `self`, routing unicasts by `unicast` and remembering the last
+  /// `memory` message ids it has seen.
+  explicit flood_router(int self, config::unicast_routing unicast = config::unicast_routing::flood,
+                        std::size_t memory = 8192)
       : self_(self), memory_(memory), unicast_(unicast) {}
 
   /// A message this node sends; `live_neighbours` sorted.
@@ -52,14 +53,12 @@ class flood_router {
   /// Copies dropped because this node had seen the message over as few hops before.
   std::uint64_t duplicates_suppressed() const noexcept { return duplicates_; }
 
-  /// The neighbour through which `origin`'s latest message came over the fewest hops, or 0
-  /// (reverse-path routing only).
-  int route_to(int origin) const;
-
  private:
   enum class sighting { first, fewer_hops, duplicate };
   sighting remember(std::uint64_t id, std::uint8_t hops);
   void learn_route(const net_message& m, int from);
+  // The neighbour through which `origin`'s latest message came over the fewest hops, or 0.
+  int route_to(int origin) const;
   std::vector<int> next_hops(const net_message& m, int from,
                              const std::vector<int>& live_neighbours) const;
 
@@ -72,7 +71,7 @@ class flood_router {
   int self_;
   std::size_t memory_;
   config::unicast_routing unicast_;
-  std::unordered_map<int, route> routes_;  // origin -> how its latest message came
+  std::unordered_map<int, route> routes_;                 // origin -> how its latest message came
   std::unordered_map<std::uint64_t, std::uint8_t> seen_;  // id -> fewest hops seen
   std::deque<std::uint64_t> seen_order_;
   std::uint64_t duplicates_ = 0;

@@ -28,7 +28,7 @@ std::int64_t last_tick_within(config::seconds d, config::seconds tick) {
 node_network::node_network(int self, std::vector<int> attached, const config::scenario& s)
     : self_(self),
       attached_(std::move(attached)),
-      router_(self, 8192, s.network.unicast),
+      router_(self, s.network.unicast),
       max_hops_(static_cast<std::uint8_t>(std::min(255u, s.network.max_hops))),
       hello_ticks_(config::to_ticks_at_least_one(s.network.hello_interval, s.run.tick)),
       silence_ticks_(config::to_ticks_at_least_one(s.network.neighbour_timeout, s.run.tick)),

@@ -88,12 +88,8 @@ std::vector<pedestrian_view> visible_pedestrians(const world::snapshot& frame,
   for (std::size_t i = 0; i < seen.size(); ++i) {
     auto& me = seen[i];
     in_front.clear();
-    for (std::size_t j = 0; j < i; ++j) {
-      const cv::Rect2d& other = seen[j].box;
-      if (other.x < me.box.x + me.box.width && me.box.x < other.x + other.width &&
-          other.y < me.box.y + me.box.height && me.box.y < other.y + other.height)
-        in_front.push_back(&other);
-    }
+    for (std::size_t j = 0; j < i; ++j)
+      if ((seen[j].box & me.box).area() > 0.0) in_front.push_back(&seen[j].box);
     int hidden = 0;
     for (int r = 0; r < grid_rows; ++r)
       for (int c = 0; c < grid_columns; ++c) {

@@ -102,7 +102,7 @@ std::vector<calibration_trial> emulated_trials(emulated_sensor& sensor,
     trial.occlusion = seen[i].occlusion;
     trial.height_px = seen[i].box.height;
     trial.similarity = largest_similarity(seen, i, signatures, sensor.model().max_occlusion);
-    const auto looked = sensor.look_for(seen[i].id, frame, where, view);
+    const auto looked = sensor.look_for(seen[i].id, frame, seen, view);
     trial.missed = !looked.found;
     trial.confused = looked.confused;
     trial.score = looked.found ? looked.detection.confidence : 0.0;
