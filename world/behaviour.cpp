@@ -607,6 +607,9 @@ class stepper {
     vec2 repulsion = vec2::Zero();
     double nearest_ahead_m = std::numeric_limits<double>::infinity();
     vec2 sidestep = vec2::Zero();
+    const double social_cutoff_m = settings_.social_cutoff_ranges * settings_.social_range_m;
+    double room_m = std::numeric_limits<double>::infinity();
+    const double near_gap_m = std::max(social_cutoff_m, 0.6) + 1e-6;
     previous_.for_each_near(s_.position, [&](const neighbour& other) {
       if (other.id == s_.id) return;
       const vec2 offset = other.position - s_.position;
@@ -614,12 +617,21 @@ class stepper {
       const double distance_squared = offset.squaredNorm();
       constexpr double reach_squared = snapshot::neighbour_cell_m * snapshot::neighbour_cell_m;
       if (distance_squared > reach_squared || distance_squared < 1e-18) return;
-      const double distance = std::sqrt(distance_squared);
-      const vec2 n = offset / distance;
-      const double gap = distance - radius - other.radius_m();
+      const double contact = radius + other.radius_m();
+      // Beyond the repulsion's cutoff and the constraints' reach only the headway and the
+      // side step matter, and they need no unit vector: most neighbours skip the sqrt and the
+      // division (a third of the step when everyone was given them).
+      const double near_m = contact + near_gap_m;
+      double gap = std::numeric_limits<double>::infinity();
+      vec2 n = vec2::Zero();
+      if (distance_squared < near_m * near_m) {
+        const double distance = std::sqrt(distance_squared);
+        n = offset / distance;
+        gap = distance - radius - other.radius_m();
+      }
       // People in the same line stand close on purpose; only the constraint keeps them apart.
       const bool same_line = in_line && other.counter == s_.counter;
-      if (!same_line) {
+      if (!same_line && gap < social_cutoff_m) {
         const double cos_phi = heading.dot(n);
         const double weight =
             settings_.anisotropy + (1.0 - settings_.anisotropy) * (1.0 + cos_phi) / 2.0;
@@ -636,7 +648,6 @@ class stepper {
       if (!same_line && !behind_me) {
         // Headway: the free path along the way ahead before touching someone in it.
         const double along = offset.dot(desired_direction);
-        const double contact = radius + other.radius_m();
         if (along > 0.0) {
           const double across =
               std::abs(offset.x() * desired_direction.y() - offset.y() * desired_direction.x());
@@ -666,8 +677,11 @@ class stepper {
            (other.distance_to_goal_m == s_.distance_to_goal_m && other.id < s_.id))) {
         yield = true;
       }
-      if (gap < 0.6 && plane_count < planes.size()) {
-        planes[plane_count++] = {n, std::max(gap - 0.01, 0.0) / (2.0 * dt)};
+      if (gap < 0.6) {
+        // Until the body's growth is known, a plane's limit holds its share of the room.
+        const double room = std::max(gap - 0.01, 0.0) / 2.0;
+        room_m = std::min(room_m, room);
+        if (plane_count < planes.size()) planes[plane_count++] = {n, room};
       }
     });
     if (sidestep.squaredNorm() > 0.0) {
@@ -706,10 +720,22 @@ class stepper {
       const vec2 n = offset / distance;
       const double gap = distance - radius;
       acceleration -= n * (settings_.wall_strength * std::exp(-gap / settings_.wall_range_m));
-      if (gap < 0.6 && plane_count < planes.size()) {
-        planes[plane_count++] = {n, std::max(gap - 0.01, 0.0) / dt};
+      if (gap < 0.6) {
+        const double room = std::max(gap - 0.01, 0.0);
+        room_m = std::min(room_m, room);
+        if (plane_count < planes.size()) planes[plane_count++] = {n, room};
       }
     }
+    // The body grows only into room nobody else may take this tick (each neighbour keeps to
+    // its half of the gap), so growing discs never overlap; shrinking frees room at once.
+    const double squeeze_max = settings_.body_squeeze * s_.look.girth_m / 2.0;
+    const double squeeze_wanted =
+        squeeze_max * (1.0 - std::min(1.0, s_.velocity.norm() / settings_.body_full_speed_mps));
+    const double step_m = settings_.body_change_mps * dt;
+    double growth = std::clamp(s_.squeeze_m - squeeze_wanted, -step_m, step_m);
+    if (growth > 0.0) growth = std::min(growth, room_m);
+    s_.squeeze_m -= growth;
+    for (std::size_t k = 0; k < plane_count; ++k) planes[k].limit = (planes[k].limit - growth) / dt;
     vec2 velocity = s_.velocity + acceleration * dt;
     const double max_speed = 1.4 * v0;
     if (velocity.norm() > max_speed) velocity *= max_speed / velocity.norm();

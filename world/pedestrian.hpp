@@ -1,6 +1,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <string_view>
 
@@ -64,7 +65,8 @@ struct appearance {
   rgb8 skin;
   rgb8 hair;
   double height_m = 1.7;
-  /// Shoulder width; the body's collision disc has radius girth_m / 2.
+  /// Shoulder width; the body's collision disc has radius girth_m / 2 when it has room (see
+  /// pedestrian_state::squeeze_m).
   double girth_m = 0.46;
   friend bool operator==(const appearance&, const appearance&) = default;
 };
@@ -97,9 +99,13 @@ struct pedestrian_state {
   int route = -1;
   /// Incremented at every goal change, so observers can tell goals apart.
   std::uint32_t goal_serial = 0;
+  /// How much narrower than its shoulders the body stands: a disc as wide as the shoulders
+  /// overstates a torso's area by about 70 %, and people pressed together turn sideways
+  /// (behaviour_settings::body_squeeze), so a slow body gives up part of its radius.
+  double squeeze_m = 0.0;
 
   /// Radius of the collision disc.
-  double radius_m() const noexcept { return look.girth_m / 2.0; }
+  double radius_m() const noexcept { return look.girth_m / 2.0 - squeeze_m; }
 };
 
 /// A pedestrian's full state, owned by the partition that steps it: the public state plus
