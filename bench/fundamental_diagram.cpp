@@ -1,7 +1,7 @@
 // The crowd against the field's reference data (issue 18): the fundamental diagram (speed and
-// specific flow against density, measured with the classic method in a corridor, beside
-// Weidmann's curve) and the specific flow through a bottleneck against its width (beside
-// the range the experiments measured). Prints tables and draws them in a PNG.
+// specific flow against density, measured with the classic and the Voronoi method in a
+// corridor, beside Weidmann's curve) and the specific flow through a bottleneck against its
+// width (beside the range the experiments measured). Prints tables and draws them in a PNG.
 //
 //   fundamental_diagram [OUT.png]      (default fundamental_diagram.png)
 
@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
@@ -76,35 +77,64 @@ int main(int argc, char** argv) {
   const std::string out = argc > 1 ? argv[1] : "fundamental_diagram.png";
   std::vector<diagram_point> block;
   std::printf(
-      "Fundamental diagram, block of people in a corridor 4 m wide (classic method, "
-      "area 4 m x 4 m, t = 2-6 s)\n");
-  std::printf("%10s %12s %10s %12s %14s\n", "target", "density", "speed", "Weidmann", "flow");
+      "Fundamental diagram, block of people in a corridor 4 m wide (area 4 m x 4 m, "
+      "t = 2-6 s); classic method, then Voronoi method (cut-off 1 m)\n");
+  std::printf("%8s %9s %7s %9s %7s   %9s %7s %9s %7s\n", "target", "density", "speed", "Weidmann",
+              "flow", "V density", "V speed", "Weidmann", "V flow");
   for (const double density : {0.25, 0.5, 0.75, 1.0, 1.25, 1.5, 1.75, 2.0}) {
     for (std::uint64_t seed = 1; seed <= 2; ++seed) {
       const auto p = world::testing::block_point(density, seed);
+      const auto& v = p.voronoi;
       block.push_back(p);
-      std::printf("%10.2f %12.2f %10.2f %12.2f %14.2f\n", density, p.density_per_m2, p.speed_mps,
-                  world::testing::weidmann_speed_mps(p.density_per_m2), p.specific_flow_per_m_s);
+      std::printf("%8.2f %9.2f %7.2f %9.2f %7.2f   %9.2f %7.2f %9.2f %7.2f\n", density,
+                  p.density_per_m2, p.speed_mps,
+                  world::testing::weidmann_speed_mps(p.density_per_m2), p.specific_flow_per_m_s,
+                  v.density_per_m2, v.speed_mps,
+                  world::testing::weidmann_speed_mps(v.density_per_m2), v.specific_flow_per_m_s);
     }
   }
   const auto jam = world::testing::jam_points();
-  std::printf("\nJam in front of a 1 m exit (rimea_04_fundamental_diagram), by density bin\n");
-  std::printf("%12s %8s %10s %12s %14s\n", "density", "points", "speed", "Weidmann", "flow");
-  for (int bin = 0; bin < 6; ++bin) {
+  // Each method's points fall into the bins by that method's density.
+  struct bin_sum {
+    int count = 0;
     double speed = 0.0;
     double flow = 0.0;
-    int count = 0;
+    void add(double speed_mps, double flow_per_m_s) {
+      ++count;
+      speed += speed_mps;
+      flow += flow_per_m_s;
+    }
+  };
+  std::printf(
+      "\nJam in front of a 1 m exit (rimea_04_fundamental_diagram), by density bin; classic "
+      "method, then Voronoi method (cut-off 1 m)\n");
+  std::printf("%12s %6s %7s %7s   %8s %7s %7s   %9s\n", "density", "points", "speed", "flow",
+              "V points", "V speed", "V flow", "Weidmann");
+  double densest = 0.0;
+  double densest_voronoi = 0.0;
+  for (const auto& p : jam) {
+    densest = std::max(densest, p.density_per_m2);
+    densest_voronoi = std::max(densest_voronoi, p.voronoi.density_per_m2);
+  }
+  for (int bin = 0; bin < std::ceil(std::max(densest, densest_voronoi)); ++bin) {
+    bin_sum classic;
+    bin_sum voronoi;
+    const auto in_bin = [&](double density) { return density >= bin && density < bin + 1; };
     for (const auto& p : jam) {
-      if (p.density_per_m2 >= bin && p.density_per_m2 < bin + 1) {
-        speed += p.speed_mps;
-        flow += p.specific_flow_per_m_s;
-        ++count;
+      if (in_bin(p.density_per_m2)) classic.add(p.speed_mps, p.specific_flow_per_m_s);
+      if (in_bin(p.voronoi.density_per_m2)) {
+        voronoi.add(p.voronoi.speed_mps, p.voronoi.specific_flow_per_m_s);
       }
     }
-    if (count == 0) continue;
-    std::printf("%5d - %4d %8d %10.2f %12.2f %14.2f\n", bin, bin + 1, count, speed / count,
-                world::testing::weidmann_speed_mps(bin + 0.5), flow / count);
+    if (classic.count == 0 && voronoi.count == 0) continue;
+    const auto mean = [](double sum, int count) { return count > 0 ? sum / count : 0.0; };
+    std::printf("%5d - %4d %6d %7.2f %7.2f   %8d %7.2f %7.2f   %9.2f\n", bin, bin + 1,
+                classic.count, mean(classic.speed, classic.count),
+                mean(classic.flow, classic.count), voronoi.count,
+                mean(voronoi.speed, voronoi.count), mean(voronoi.flow, voronoi.count),
+                world::testing::weidmann_speed_mps(bin + 0.5));
   }
+  std::printf("densest: %.2f /m^2 classic, %.2f /m^2 Voronoi\n", densest, densest_voronoi);
   std::printf("\nBottleneck: 150 people leave a 10 m x 10 m room by an exit 1 m long\n");
   std::printf("%10s %22s %22s\n", "width (m)", "specific flow seed 1", "specific flow seed 2");
   std::vector<std::pair<double, double>> bottleneck;
@@ -116,10 +146,11 @@ int main(int argc, char** argv) {
     std::printf("%10.1f %22.2f %22.2f\n", width, a, b);
   }
 
-  cv::Mat image(480, 1500, CV_8UC3, cv::Scalar(255, 255, 255));
+  cv::Mat image(500, 1500, CV_8UC3, cv::Scalar(255, 255, 255));
   const cv::Scalar reference(60, 60, 220);  // red: published
   const cv::Scalar ours(200, 110, 30);      // blue: Argus, free branch
   const cv::Scalar jammed(60, 160, 60);     // green: Argus, jam
+  const cv::Scalar voronoi(0, 140, 255);    // orange: Argus, both, by the Voronoi method
   const panel speed{{70, 60, 400, 340}, 6.0, 1.6};
   speed.axes(image, "Speed against density", "density (1/m^2)", "speed (m/s)", 1.0, 0.2);
   const panel flow{{560, 60, 400, 340}, 6.0, 2.0};
@@ -134,14 +165,19 @@ int main(int argc, char** argv) {
     cv::line(image, flow.at(rho, rho * world::testing::weidmann_speed_mps(rho)),
              flow.at(next, next * world::testing::weidmann_speed_mps(next)), reference, 2);
   }
-  for (const auto& p : jam) {
-    cv::circle(image, speed.at(p.density_per_m2, p.speed_mps), 2, jammed, cv::FILLED);
-    cv::circle(image, flow.at(p.density_per_m2, p.specific_flow_per_m_s), 2, jammed, cv::FILLED);
-  }
-  for (const auto& p : block) {
-    cv::circle(image, speed.at(p.density_per_m2, p.speed_mps), 4, ours, cv::FILLED);
-    cv::circle(image, flow.at(p.density_per_m2, p.specific_flow_per_m_s), 4, ours, cv::FILLED);
-  }
+  // The same sizes as the classic points: small for the jam, large for the block.
+  const auto plot = [&](const diagram_point& p, int size, const cv::Scalar& colour) {
+    cv::circle(image, speed.at(p.density_per_m2, p.speed_mps), size, colour, cv::FILLED);
+    cv::circle(image, flow.at(p.density_per_m2, p.specific_flow_per_m_s), size, colour, cv::FILLED);
+  };
+  const auto plot_voronoi = [&](const diagram_point& p, int size) {
+    const auto& v = p.voronoi;
+    plot({v.density_per_m2, v.speed_mps, v.specific_flow_per_m_s, {}}, size, voronoi);
+  };
+  for (const auto& p : jam) plot(p, 2, jammed);
+  for (const auto& p : jam) plot_voronoi(p, 2);
+  for (const auto& p : block) plot(p, 4, ours);
+  for (const auto& p : block) plot_voronoi(p, 4);
   // The experiments' range: about 1.2-1.9 /(m s) for exits 0.8-2.5 m wide (Kretz et al. 2006,
   // Seyfried et al. 2009, Mueller 1981), drawn as a band, not as their individual points.
   cv::rectangle(image, width.at(0.8, 1.9), width.at(2.5, 1.2), cv::Scalar(200, 200, 250),
@@ -153,6 +189,10 @@ int main(int argc, char** argv) {
   report::draw_text(image, "blue: Argus, block in a corridor; bottleneck (2 seeds)", {560, 460},
                     0.45, ours);
   report::draw_text(image, "green: Argus, jam before a 1 m exit", {1050, 460}, 0.45, jammed);
+  report::draw_text(image,
+                    "orange: the block (large) and the jam (small) by the Voronoi method, cut-off "
+                    "1 m (blue, green: by the classic method)",
+                    {70, 485}, 0.45, voronoi);
   if (!cv::imwrite(out, image)) {
     std::fprintf(stderr, "fundamental_diagram: cannot write %s\n", out.c_str());
     return 1;

@@ -62,8 +62,8 @@ struct flow_settings {
 };
 
 /// An area where density, speed and flow are measured (classic method: persons in the area
-/// over its area, their mean speed, specific flow = density x speed), written to
-/// measurements.csv.
+/// over its area, their mean speed, specific flow = density x speed; and the Voronoi method,
+/// world/voronoi_measurement.hpp), written to measurements.csv.
 struct measurement_area {
   std::string name;
   plan_box area;

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "world/snapshot.hpp"
+#include "world/voronoi_measurement.hpp"
 
 namespace argus::world {
 
@@ -24,14 +25,18 @@ area_measurement measure_area(const snapshot& frame, const box& area) {
 }
 
 measurement_writer::measurement_writer(std::ostream& out) : out_(out) {
-  out_ << "t,area,count,density_per_m2,speed_mps,specific_flow_per_m_s\n";
+  // The Voronoi columns come last, so readers of the classic ones find them where they were.
+  out_ << "t,area,count,density_per_m2,speed_mps,specific_flow_per_m_s,voronoi_density_per_m2,"
+          "voronoi_speed_mps,voronoi_specific_flow_per_m_s\n";
 }
 
 void measurement_writer::write(const snapshot& frame, std::span<const named_area> areas) {
   for (const auto& a : areas) {
     const auto m = measure_area(frame, a.area);
-    out_ << fmt::format("{},{},{},{},{},{}\n", frame.time().count(), a.name, m.count,
-                        m.density_per_m2, m.speed_mps, m.specific_flow_per_m_s);
+    const auto v = measure_area_voronoi(frame, a.area);
+    out_ << fmt::format("{},{},{},{},{},{},{},{},{}\n", frame.time().count(), a.name, m.count,
+                        m.density_per_m2, m.speed_mps, m.specific_flow_per_m_s, v.density_per_m2,
+                        v.speed_mps, v.specific_flow_per_m_s);
   }
 }
 

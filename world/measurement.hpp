@@ -14,7 +14,8 @@ class snapshot;
 /// them with the classic method (Zhang et al. 2011, "method C"): the density is the number
 /// of people whose centre lies in the area over its area, the speed their mean speed, and the
 /// specific flow (persons per metre of width per second) the product of the two,
-/// J_s = rho v (the hydrodynamic relation).
+/// J_s = rho v (the hydrodynamic relation). The Voronoi method ("method D") is in
+/// world/voronoi_measurement.hpp.
 struct area_measurement {
   unsigned count = 0;
   double density_per_m2 = 0.0;
@@ -31,8 +32,9 @@ struct named_area {
   box area;
 };
 
-/// Writes measurements as CSV: `t,area,count,density_per_m2,speed_mps,specific_flow_per_m_s`,
-/// one row per area per call.
+/// Writes measurements as CSV, one row per area per call: `t,area,count,density_per_m2,
+/// speed_mps,specific_flow_per_m_s` by the classic method, then `voronoi_density_per_m2,
+/// voronoi_speed_mps,voronoi_specific_flow_per_m_s` by the Voronoi method (cut-off 1 m).
 class measurement_writer {
  public:
   /// Writes the header line to `out`, which must outlive the writer.

@@ -1,6 +1,6 @@
 #pragma once
 // Measuring the fundamental diagram as the field does (RiMEA test 4; Zhang et al. 2011's
-// classic method in a measurement area), shared by tests/world/rimea_test and
+// classic and Voronoi methods in a measurement area), shared by tests/world/rimea_test and
 // bench/fundamental_diagram:
 // - the free and moderate branch: a block of people at a chosen density, spread uniformly
 //   over a corridor 4 m wide and 60 m long, all walking east; the area in the block's middle
@@ -12,14 +12,17 @@
 
 #include "tests/world/experiment.hpp"
 #include "world/measurement.hpp"
+#include "world/voronoi_measurement.hpp"
 
 namespace argus::world::testing {
 
-/// One measurement: density (/m^2), speed (m/s), specific flow (/(m s)).
+/// One measurement: density (/m^2), speed (m/s), specific flow (/(m s)) by the classic
+/// method, and the same moments by the Voronoi method (cut-off 1 m).
 struct diagram_point {
   double density_per_m2 = 0.0;
   double speed_mps = 0.0;
   double specific_flow_per_m_s = 0.0;
+  voronoi_measurement voronoi;
 };
 
 /// The corridor of the block experiment: 4 m x 60 m, exit at the east end.
@@ -55,14 +58,22 @@ inline diagram_point block_point(double density_per_m2, std::uint64_t seed = 1) 
     sum.density_per_m2 += m.density_per_m2;
     sum.speed_mps += m.speed_mps;
     sum.specific_flow_per_m_s += m.specific_flow_per_m_s;
+    const auto v = measure_area_voronoi(now, area);
+    sum.voronoi.density_per_m2 += v.density_per_m2;
+    sum.voronoi.speed_mps += v.speed_mps;
+    sum.voronoi.specific_flow_per_m_s += v.specific_flow_per_m_s;
     ++samples;
   });
   if (samples == 0) return sum;
-  return {sum.density_per_m2 / samples, sum.speed_mps / samples,
-          sum.specific_flow_per_m_s / samples};
+  return {sum.density_per_m2 / samples,
+          sum.speed_mps / samples,
+          sum.specific_flow_per_m_s / samples,
+          {sum.voronoi.density_per_m2 / samples, sum.voronoi.speed_mps / samples,
+           sum.voronoi.specific_flow_per_m_s / samples}};
 }
 
-/// The jam experiment: one point per area per second with at least two people in the area.
+/// The jam experiment: one point per area per second with at least two people in the area
+/// (by the classic method's count, for both methods: the same moments).
 inline std::vector<diagram_point> jam_points() {
   experiment corridor(validation_scenario("rimea_04_fundamental_diagram.yaml"));
   std::vector<box> areas;
@@ -74,7 +85,10 @@ inline std::vector<diagram_point> jam_points() {
     if (now.tick() % 15 != 0) return;
     for (const auto& a : areas) {
       const auto m = measure_area(now, a);
-      if (m.count >= 2) out.push_back({m.density_per_m2, m.speed_mps, m.specific_flow_per_m_s});
+      if (m.count >= 2) {
+        out.push_back(
+            {m.density_per_m2, m.speed_mps, m.specific_flow_per_m_s, measure_area_voronoi(now, a)});
+      }
     }
   });
   return out;
