@@ -35,8 +35,9 @@ struct behaviour_settings {
   /// area of a disc 0.77 as wide as the shoulders); walking at `body_full_speed_mps` or faster
   /// it takes its full width. The radius changes by at most `body_change_mps` and grows only
   /// into free room, so no two discs overlap. Rigid discs as wide as the shoulders pack at
-  /// most about 4.2 /m^2 at random; people reach Weidmann's jam density, 5.4 /m^2.
-  double body_squeeze = 0.2;
+  /// most about 4.2 /m^2 at random (the densest area measured with them: 4.25 /m^2), short
+  /// of Weidmann's jam density, 5.4 /m^2 (bench/RESULTS.md has what these reach).
+  double body_squeeze = 0.23;
   double body_full_speed_mps = 0.3;
   double body_change_mps = 0.1;
   /// Wall repulsion strength (m/s^2) and range (m).

@@ -135,6 +135,7 @@ voronoi_measurement measure_area_voronoi(const snapshot& frame, const box& area,
                          {area.min.x() - origin.x(), area.max.y() - origin.y()}};
   double density_sum = 0.0;
   double speed_sum = 0.0;
+  double covered_m2 = 0.0;
   for (std::size_t k = 0; k < vertices.size(); ++k) {
     const auto& group = members[static_cast<std::size_t>(vertices[k])];
     polygon facet;
@@ -149,9 +150,10 @@ voronoi_measurement measure_area_voronoi(const snapshot& frame, const box& area,
     for (const auto i : group) group_speed_sum += speeds[i];
     density_sum += static_cast<double>(group.size()) * inside_m2 / cell_m2;
     speed_sum += group_speed_sum / static_cast<double>(group.size()) * inside_m2;
+    covered_m2 += inside_m2;
   }
   out.density_per_m2 = density_sum / area_m2;
-  out.speed_mps = speed_sum / area_m2;
+  out.speed_mps = covered_m2 > 0.0 ? speed_sum / covered_m2 : 0.0;
   out.specific_flow_per_m_s = out.density_per_m2 * out.speed_mps;
   return out;
 }

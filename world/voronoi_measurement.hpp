@@ -10,9 +10,13 @@ class snapshot;
 /// al. 2011, J. Stat. Mech. P06004, "method D", as JuPedSim's jpsreport measures it). Each
 /// pedestrian i owns its Voronoi cell A_i, cut off by a circle around it, and with M the area:
 ///
-///   rho_V = sum_i |A_i ∩ M| / |A_i| / |M|      (each person spread evenly over their cell)
-///   v_V   = sum_i v_i |A_i ∩ M| / |M|          (v_i = |velocity|)
-///   J_s   = rho_V v_V
+///   rho_V = sum_i |A_i ∩ M| / |A_i| / |M|               (each person spread evenly over their
+///   cell) v_V   = sum_i v_i |A_i ∩ M| / sum_i |A_i ∩ M|       (v_i = |velocity|) J_s   = rho_V v_V
+///
+/// Where the cells cover M (a crowd denser than one person per cut-off circle), v_V is
+/// Zhang's sum_i v_i |A_i ∩ M| / |M|. Where the cut-off leaves part of M to nobody, Zhang's
+/// formula counts that part as standing still (walkers at 0.25 /m^2 came out at half their
+/// speed); here it is left out of the mean instead.
 ///
 /// Someone standing just outside M still counts for the part of their cell inside it, so the
 /// density changes smoothly as people cross M's edge instead of by a whole person.

@@ -76,7 +76,7 @@ TEST(voronoi_measurement, metre_lattice_has_one_per_square_metre) {
 
 //   +-------------------+ y=8      M = 5 m x 4 m; the walker's cell is the whole
 //   |      .-"-.        |          cut-off polygon, all of it in M: it counts once,
-//   |     (  o  )       |          and its speed over the polygon's area only
+//   |     (  o  )       |          and the rest of M, nobody's, does not dilute its speed
 //   |      '-.-'        |
 //   +-------------------+ y=4
 //  x=4                 x=9
@@ -84,7 +84,7 @@ TEST(voronoi_measurement, someone_alone_counts_once_with_the_cut_off_as_cell) {
   const box area{{4.0, 4.0}, {9.0, 8.0}};
   const auto m = measure_area_voronoi(frame_of({walker(1, {6.0, 6.0}, {1.2, 0.9})}), area);
   EXPECT_NEAR(m.density_per_m2, 1.0 / 20.0, 1e-9);
-  EXPECT_NEAR(m.speed_mps, 1.5 * cut_off_m2 / 20.0, 1e-9);
+  EXPECT_NEAR(m.speed_mps, 1.5, 1e-9);
   EXPECT_NEAR(m.specific_flow_per_m_s, m.density_per_m2 * m.speed_mps, 1e-12);
 }
 
@@ -93,7 +93,7 @@ TEST(voronoi_measurement, someone_on_the_edge_counts_half) {
   const box area{{4.0, 4.0}, {9.0, 8.0}};
   const auto m = measure_area_voronoi(frame_of({walker(1, {4.0, 6.0}, {1.2, 0.9})}), area);
   EXPECT_NEAR(m.density_per_m2, 0.5 / 20.0, 1e-9);
-  EXPECT_NEAR(m.speed_mps, 1.5 * cut_off_m2 / 2.0 / 20.0, 1e-9);
+  EXPECT_NEAR(m.speed_mps, 1.5, 1e-9);
 }
 
 TEST(voronoi_measurement, nobody_near_the_area_gives_zeros) {
@@ -112,7 +112,7 @@ TEST(voronoi_measurement, people_at_one_point_share_its_cell) {
   const auto pair = measure_area_voronoi(
       frame_of({walker(1, {6.0, 6.0}, {1.0, 0.0}), walker(2, {6.0, 6.0}, {2.0, 0.0})}), alone);
   EXPECT_NEAR(pair.density_per_m2, 2.0 / 20.0, 1e-9);
-  EXPECT_NEAR(pair.speed_mps, 1.5 * cut_off_m2 / 20.0, 1e-9);  // their mean speed
+  EXPECT_NEAR(pair.speed_mps, 1.5, 1e-9);  // their mean speed
 
   // In a 1 m lattice, a second person standing still on a lattice point inside the area.
   auto people = lattice(1.0);
@@ -187,6 +187,7 @@ voronoi_measurement by_every_bisector(const std::vector<pedestrian_state>& peopl
       area.min, {area.max.x(), area.min.y()}, area.max, {area.min.x(), area.max.y()}};
   const vec2 size = area.max - area.min;
   voronoi_measurement out;
+  double covered_m2 = 0.0;
   for (const auto& p : people) {
     polygon cell;
     for (int k = 0; k < 20; ++k) {
@@ -204,8 +205,10 @@ voronoi_measurement by_every_bisector(const std::vector<pedestrian_state>& peopl
       inside = keep_left(inside, measured[k], measured[(k + 1) % measured.size()]);
     }
     out.density_per_m2 += area_of(inside) / area_of(cell) / (size.x() * size.y());
-    out.speed_mps += p.velocity.norm() * area_of(inside) / (size.x() * size.y());
+    out.speed_mps += p.velocity.norm() * area_of(inside);
+    covered_m2 += area_of(inside);
   }
+  if (covered_m2 > 0.0) out.speed_mps /= covered_m2;
   return out;
 }
 
@@ -242,7 +245,7 @@ TEST(voronoi_measurement, odd_crowds_give_finite_numbers) {
   for (int id = 1; id <= 50; ++id) people.push_back(walker(id, {6.0, 6.0}));
   const auto heap = measure_area_voronoi(frame_of(people), area);
   EXPECT_NEAR(heap.density_per_m2, 50.0 / 16.0, 1e-9);
-  EXPECT_NEAR(heap.speed_mps, 1.2 * cut_off_m2 / 16.0, 1e-9);
+  EXPECT_NEAR(heap.speed_mps, 1.2, 1e-9);
   people.clear();
   for (int k = 0; k < 40; ++k) {
     people.push_back(walker(2 * k + 1, {3.0 + 0.15 * k, 5.0}));
