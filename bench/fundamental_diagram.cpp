@@ -153,7 +153,7 @@ int main(int argc, char** argv) {
   const cv::Scalar voronoi(0, 140, 255);    // orange: Argus, both, by the Voronoi method
   const panel speed{{70, 60, 400, 340}, 6.0, 1.6};
   speed.axes(image, "Speed against density", "density (1/m^2)", "speed (m/s)", 1.0, 0.2);
-  const panel flow{{560, 60, 400, 340}, 6.0, 2.0};
+  const panel flow{{560, 60, 400, 340}, 6.0, 3.0};
   flow.axes(image, "Specific flow against density", "density (1/m^2)", "flow (1/(m s))", 1.0, 0.5);
   const panel width{{1050, 60, 400, 340}, 3.0, 2.5};
   width.axes(image, "Bottleneck: specific flow against width", "width (m)", "flow (1/(m s))", 0.5,
