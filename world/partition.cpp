@@ -30,7 +30,9 @@ partition_result partition_step(const station& where, const snapshot& previous,
                                 const behaviour_settings& settings) {
   partition_result out;
   out.pedestrians.reserve(own.size());
-  for (const auto& each : own) {
+  for (std::size_t i = 0; i < own.size(); ++i) {
+    const auto& each = own[i];
+    if (i + 1 < own.size()) where.prefetch_route(own[i + 1].field, own[i + 1].state.position);
     auto next = step_pedestrian(where, previous, each, settings, out.events);
     if (!next) continue;
     (bounds.contains(next->state.position) ? out.pedestrians : out.handed_over)

@@ -42,6 +42,20 @@ double station::distance_to(int field, const vec2& p) const {
   return best;
 }
 
+void station::prefetch_route(int field, const vec2& p) const {
+  if (field < 0) return;
+  // direction_to's 4 x 4 patch (distance_to's 3 x 3 cells lie inside it); a row of it may
+  // straddle two cache lines.
+  const int x = static_cast<int>(std::floor(p.x() / settings_.cell_m - 0.5)) - 1;
+  const int y = static_cast<int>(std::floor(p.y() / settings_.cell_m - 0.5)) - 1;
+  if (x < 0 || y < 0 || x + 3 >= grid_w_ || y + 3 >= grid_h_) return;
+  const float* row = fields_[field].data() + y * grid_w_ + x;
+  for (int j = 0; j < 4; ++j, row += grid_w_) {
+    __builtin_prefetch(row);
+    __builtin_prefetch(row + 3);
+  }
+}
+
 vec2 station::direction_to(int field, const vec2& p) const {
   const double cell = settings_.cell_m;
   // Bilinear interpolation between the four surrounding cell centres gives a smooth route
