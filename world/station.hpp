@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <memory>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "config/scenario_error.hpp"
@@ -149,6 +150,9 @@ class station {
   void check_lines(std::vector<config::problem>& problems) const;
   void check_portals(std::vector<config::problem>& problems) const;
   std::vector<float> dijkstra(const std::vector<int>& sources) const;
+  // The lower-left of the four cells whose centres surround `p`: where direction_to's
+  // bilinear stencil starts (and what prefetch_route fetches around).
+  std::pair<int, int> stencil_corner(const vec2& p) const;
 
   layout plan_;
   navigation_settings settings_;

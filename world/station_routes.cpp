@@ -42,12 +42,18 @@ double station::distance_to(int field, const vec2& p) const {
   return best;
 }
 
+std::pair<int, int> station::stencil_corner(const vec2& p) const {
+  return {static_cast<int>(std::floor(p.x() / settings_.cell_m - 0.5)),
+          static_cast<int>(std::floor(p.y() / settings_.cell_m - 0.5))};
+}
+
 void station::prefetch_route(int field, const vec2& p) const {
   if (field < 0) return;
   // direction_to's 4 x 4 patch (distance_to's 3 x 3 cells lie inside it); a row of it may
   // straddle two cache lines.
-  const int x = static_cast<int>(std::floor(p.x() / settings_.cell_m - 0.5)) - 1;
-  const int y = static_cast<int>(std::floor(p.y() / settings_.cell_m - 0.5)) - 1;
+  const auto [x0, y0] = stencil_corner(p);
+  const int x = x0 - 1;
+  const int y = y0 - 1;
   if (x < 0 || y < 0 || x + 3 >= grid_w_ || y + 3 >= grid_h_) return;
   const float* row = fields_[field].data() + y * grid_w_ + x;
   for (int j = 0; j < 4; ++j, row += grid_w_) {
@@ -60,12 +66,9 @@ vec2 station::direction_to(int field, const vec2& p) const {
   const double cell = settings_.cell_m;
   // Bilinear interpolation between the four surrounding cell centres gives a smooth route
   // direction instead of the grid's eight compass directions.
-  const double gx = p.x() / cell - 0.5;
-  const double gy = p.y() / cell - 0.5;
-  const int x0 = static_cast<int>(std::floor(gx));
-  const int y0 = static_cast<int>(std::floor(gy));
-  const double tx = gx - x0;
-  const double ty = gy - y0;
+  const auto [x0, y0] = stencil_corner(p);
+  const double tx = p.x() / cell - 0.5 - x0;
+  const double ty = p.y() / cell - 0.5 - y0;
   // The field on the 4 x 4 cells around the stencil, patch[j][i] = cell (x0 - 1 + i, y0 - 1 + j),
   // read in one go before anything depends on it: the four rows are four cache lines of a large
   // array, and loads issued together miss together instead of one after another.
