@@ -26,6 +26,7 @@ try:
     from selenium.webdriver.chrome.service import Service
     from selenium.webdriver.common.action_chains import ActionChains
     from selenium.webdriver.common.by import By
+    from selenium.common.exceptions import TimeoutException
     from selenium.webdriver.support.ui import Select, WebDriverWait
 except ImportError:
     skip("Python's selenium is not installed")
@@ -78,12 +79,29 @@ def main(argus, scenario, out):
         wait.until(lambda d: frames(d) >= seen + 2)  # the feed now shows that camera
         feed = driver.find_element(By.ID, "feed")
         natural = driver.execute_script(
-            "const i = arguments[0]; return [i.naturalWidth, i.naturalHeight]", feed)
+            "const i = arguments[0]; return [Number(i.dataset.width), Number(i.dataset.height)]",
+            feed)
         size = feed.size
         dx = x * size["width"] / natural[0] - size["width"] / 2
         dy = y * size["height"] / natural[1] - size["height"] / 2
         ActionChains(driver).move_to_element_with_offset(feed, dx, dy).click().perform()
-        wait.until(lambda d: "queued" in d.find_element(By.ID, "reply").text)
+        try:
+            wait.until(lambda d: "queued" in d.find_element(By.ID, "reply").text)
+        except TimeoutException:
+            raise AssertionError("the click at (%d, %d) on camera %d's feed got no 'queued': "
+                                 "reply %r, feed %r, page %r" % (
+                                     x, y, camera, driver.find_element(By.ID, "reply").text,
+                                     driver.find_element(By.ID, "feed-source").text,
+                                     driver.execute_script(
+                                         "const f = document.getElementById('feed');"
+                                         "const r = f.getBoundingClientRect();"
+                                         "const e = document.elementFromPoint("
+                                         "r.left + r.width * arguments[0], "
+                                         "r.top + r.height * arguments[1]);"
+                                         "return [r.left, r.top, r.width, r.height, "
+                                         "f.naturalWidth, window.scrollY, e && e.id, "
+                                         "document.getElementById('camera').value]",
+                                         x / natural[0], y / natural[1])))
         driver.find_element(By.ID, "pause").click()
         wait.until(lambda d: d.find_element(By.ID, "run-state").text == "running")
 
