@@ -23,10 +23,10 @@ struct behaviour_settings {
   /// Pedestrian-pedestrian repulsion strength (m/s^2) and range (m).
   /// Short and stiff: stronger than the driving force at contact, so people in a jam keep a
   /// few centimetres apart and keep room to slide past each other instead of locking into
-  /// arches. Over about half the range of Helbing et al. 2000 (25 m/s^2 over 0.08 m): with
-  /// 8 m/s^2 over 0.08 m a standing crowd kept about 10 cm apart and its densest area reached
-  /// 4.8 /m^2 by the Voronoi method; with these it reaches Weidmann's jam density, 5.4 /m^2,
-  /// and the bottleneck flows stay in the published range (bench/RESULTS.md).
+  /// arches. About half the range of Helbing et al. 2000 (25 m/s^2 over 0.08 m): over 0.08 m
+  /// (at 8 m/s^2) a standing crowd kept about 10 cm apart and its densest area reached 4.8
+  /// /m^2 by the Voronoi method; with these it reaches Weidmann's jam density, 5.4 /m^2, and
+  /// the bottleneck flows stay in the published range (bench/RESULTS.md).
   double social_strength = 6.0;
   double social_range_m = 0.045;
   /// Beyond this many ranges the repulsion (below 5e-5 of its strength) is left out.

@@ -78,30 +78,20 @@ def main(argus, scenario, out):
         seen = frames(driver)
         wait.until(lambda d: frames(d) >= seen + 2)  # the feed now shows that camera
         feed = driver.find_element(By.ID, "feed")
-        natural = driver.execute_script(
+        shown = driver.execute_script(  # the size of the frame the page shows
             "const i = arguments[0]; return [Number(i.dataset.width), Number(i.dataset.height)]",
             feed)
         size = feed.size
-        dx = x * size["width"] / natural[0] - size["width"] / 2
-        dy = y * size["height"] / natural[1] - size["height"] / 2
+        dx = x * size["width"] / shown[0] - size["width"] / 2
+        dy = y * size["height"] / shown[1] - size["height"] / 2
         ActionChains(driver).move_to_element_with_offset(feed, dx, dy).click().perform()
         try:
             wait.until(lambda d: "queued" in d.find_element(By.ID, "reply").text)
         except TimeoutException:
-            raise AssertionError("the click at (%d, %d) on camera %d's feed got no 'queued': "
-                                 "reply %r, feed %r, page %r" % (
+            raise AssertionError("the click at (%d, %d) on camera %d's feed queued no task; the "
+                                 "page says %r, its feed %r" % (
                                      x, y, camera, driver.find_element(By.ID, "reply").text,
-                                     driver.find_element(By.ID, "feed-source").text,
-                                     driver.execute_script(
-                                         "const f = document.getElementById('feed');"
-                                         "const r = f.getBoundingClientRect();"
-                                         "const e = document.elementFromPoint("
-                                         "r.left + r.width * arguments[0], "
-                                         "r.top + r.height * arguments[1]);"
-                                         "return [r.left, r.top, r.width, r.height, "
-                                         "f.naturalWidth, window.scrollY, e && e.id, "
-                                         "document.getElementById('camera').value]",
-                                         x / natural[0], y / natural[1])))
+                                     driver.find_element(By.ID, "feed-source").text))
         driver.find_element(By.ID, "pause").click()
         wait.until(lambda d: d.find_element(By.ID, "run-state").text == "running")
 
