@@ -29,12 +29,21 @@ fi
 apt_opts=(-o "Dir::Etc::SourceList=/dev/null" -o "Dir::Etc::SourceParts=$work/sources"
           -o "Dir::State::Lists=$work/lists" -o "Dir::Cache=$work/cache"
           -o "APT::Sandbox::User=root" -o "Debug::NoLocking=1")
-apt-get "${apt_opts[@]}" -q update >&2
-# Only the upstream tarball is needed; apt verifies it against the signed source index.
-(cd "$work" && apt-get "${apt_opts[@]}" -q source --download-only "actor-framework=${version%+b*}" >&2) || true
 tarball="$work/actor-framework_${upstream}.orig.tar.gz"
+# Only the upstream tarball is needed; apt verifies it against the signed source index, and a
+# missing Debian diff (the mirror has answered 404 for it) is no loss. A mirror or proxy that
+# fails once is tried again: a CI run was lost to one fetch.
+for attempt in 1 2 3 4; do
+  if timeout 300 apt-get "${apt_opts[@]}" -q update >&2; then
+    (cd "$work" && timeout 300 apt-get "${apt_opts[@]}" -q source --download-only \
+      "actor-framework=${version%+b*}" >&2) || true
+  fi
+  [ -f "$tarball" ] && break
+  echo "argus: fetching Debian's actor-framework $upstream source failed (attempt $attempt of 4)" >&2
+  [ "$attempt" -lt 4 ] && sleep $((attempt * 20))
+done
 if [ ! -f "$tarball" ]; then
-  echo "argus: could not fetch Debian's actor-framework $upstream source" >&2
+  echo "argus: could not fetch Debian's actor-framework $upstream source (needed for the TSan build)" >&2
   exit 1
 fi
 tar -xzf "$tarball" -C "$work"
