@@ -82,7 +82,7 @@ void append_pedestrian(const world::pedestrian_state& p, double time_s,
   // Body frame: origin between the feet on the floor, x forward (heading), z up.
   Affine3d body = Affine3d::Identity();
   body.translate(Vector3d{p.position.x(), p.position.y(), 0.0});
-  body.rotate(AngleAxisd(p.heading_rad, Vector3d::UnitZ()));
+  body.rotate(AngleAxisd(p.heading_rad(), Vector3d::UnitZ()));
 
   // Proportions of an adult figure, as fractions of the height.
   const double leg_length = 0.47 * h;

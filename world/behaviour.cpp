@@ -150,7 +150,7 @@ pedestrian make_body(int id, std::uint64_t run_seed, const vec2& position,
   rng speed_random(config::derive_seed(config::derive_seed(run_seed, speed_stream),
                                        static_cast<std::uint64_t>(id)));
   p.preferred_speed_mps = speeds.draw(speed_random);
-  p.state.heading_rad = p.random.uniform(-M_PI, M_PI);
+  p.state.placed_heading_rad = p.random.uniform(-M_PI, M_PI);
   return p;
 }
 
@@ -610,13 +610,33 @@ class stepper {
     const double social_cutoff_m = settings_.social_cutoff_ranges * settings_.social_range_m;
     double room_m = std::numeric_limits<double>::infinity();
     const double near_gap_m = std::max(social_cutoff_m, 0.6) + 1e-6;
-    previous_.for_each_near(s_.position, [&](const neighbour& other) {
+    // Who can change this step, sifted before the visit without a branch: someone near
+    // (the repulsion, the constraints, the arch test), or someone farther in the lane ahead
+    // who is close enough for the headway to slow us or coming the other way (the side step).
+    // Everyone else would only lose a comparison below, so leaving them out changes no result.
+    // The tests repeat the visit's own arithmetic; the margins only widen them.
+    constexpr double reach_squared = snapshot::neighbour_cell_m * snapshot::neighbour_cell_m;
+    const double headway_reach_m = settings_.headway_s * v0 + 1e-6;
+    const double lane_margin_m = settings_.sidestep_margin_m + 1e-9;
+    const auto matters = [&](const neighbour& other) {
+      const vec2 offset = other.position - s_.position;
+      const double distance_squared = offset.squaredNorm();
+      const double contact = radius + other.radius_m();
+      const double near_m = contact + near_gap_m;
+      const double along = offset.dot(desired_direction);
+      const double across =
+          std::abs(offset.x() * desired_direction.y() - offset.y() * desired_direction.x());
+      const bool in_reach = !(distance_squared > reach_squared) & !(distance_squared < 1e-18);
+      const bool near = distance_squared < near_m * near_m;
+      const bool in_lane = (along > 0.0) & (across < contact + lane_margin_m);
+      const bool slows = along - contact < headway_reach_m;
+      const bool oncoming = other.velocity.dot(desired_direction) < -0.1 + 1e-9;
+      return in_reach & (near | (in_lane & (slows | oncoming)));
+    };
+    previous_.for_each_near_where(s_.position, matters, [&](const neighbour& other) {
       if (other.id == s_.id) return;
       const vec2 offset = other.position - s_.position;
-      // Most of the 3 x 3 cells' people are out of reach: reject them before the sqrt.
       const double distance_squared = offset.squaredNorm();
-      constexpr double reach_squared = snapshot::neighbour_cell_m * snapshot::neighbour_cell_m;
-      if (distance_squared > reach_squared || distance_squared < 1e-18) return;
       const double contact = radius + other.radius_m();
       // Beyond the repulsion's cutoff and the constraints' reach only the headway and the
       // side step matter, and they need no unit vector: most neighbours skip the sqrt and the
@@ -750,7 +770,7 @@ class stepper {
     velocity *= std::max(scale, 0.0);
     s_.velocity = velocity;
     s_.position += velocity * dt;
-    if (velocity.norm() > 0.1) s_.heading_rad = std::atan2(velocity.y(), velocity.x());
+    if (velocity.norm() > 0.1) s_.facing = velocity;
     if (wants_to_walk && velocity.norm() < 0.1 * v0) {
       self_.blocked_s += dt;
     } else if (!yield) {

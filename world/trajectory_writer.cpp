@@ -18,7 +18,7 @@ void trajectory_writer::write(const snapshot& frame) {
   for (const auto& p : frame.pedestrians()) {
     fmt::format_to(std::back_inserter(buffer), "{},{},{},{},{},{},{},{},{}\n", frame.tick(),
                    frame.time().count(), p.id, p.position.x(), p.position.y(), p.velocity.x(),
-                   p.velocity.y(), p.heading_rad, to_string(p.doing));
+                   p.velocity.y(), p.heading_rad(), to_string(p.doing));
   }
   out_ << buffer;
 }

@@ -89,7 +89,7 @@ world::pedestrian_state walker(double x) {
   p.id = 3;
   p.position = {x, 6.0};
   p.velocity = {1.4, 0.0};
-  p.heading_rad = 0.0;
+  p.placed_heading_rad = 0.0;
   p.look.shirt = {200, 30, 30};
   p.look.trousers = {30, 30, 120};
   p.look.skin = {220, 180, 150};

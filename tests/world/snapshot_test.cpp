@@ -41,6 +41,30 @@ TEST(snapshot, neighbours_cover_two_metres) {
   EXPECT_EQ(seen, (std::vector<int>{1, 2, 3}));
 }
 
+// The sifted visit is the plain one with the rejected left out, in the same order: the
+// crowd's step sums forces in visiting order, so any reordering would change trajectories.
+// 400 people in 6 x 6 m put more than one sifting chunk (128) into a row of cells.
+TEST(snapshot, sifted_neighbours_keep_the_order) {
+  std::vector<pedestrian_state> crowd;
+  std::uint64_t state = 12345;
+  auto uniform = [&] {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return static_cast<double>(state >> 11) / 9007199254740992.0;
+  };
+  for (int id = 1; id <= 400; ++id) crowd.push_back(at(id, 97 + 6 * uniform(), 47 + 6 * uniform()));
+  snapshot s(penn(), 1, std::chrono::duration<double>{0.0}, crowd);
+  const vec2 here{100.0, 50.0};
+  auto keep = [&](const neighbour& p) { return (p.position - here).x() > 0.3; };
+  std::vector<int> plain;
+  s.for_each_near(here, [&](const neighbour& p) {
+    if (keep(p)) plain.push_back(p.id);
+  });
+  std::vector<int> sifted;
+  s.for_each_near_where(here, keep, [&](const neighbour& p) { sifted.push_back(p.id); });
+  ASSERT_GT(plain.size(), 128u);
+  EXPECT_EQ(sifted, plain);
+}
+
 TEST(snapshot, lines_are_ranked_by_join_tick_then_id) {
   auto a = at(7, 80, 86);
   a.counter = 0;
