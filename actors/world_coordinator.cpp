@@ -113,12 +113,12 @@ void step_world(caf::stateful_actor<world_coordinator_state>* self, tick_context
              fmt::format(R"("reported":{},"partitions":{})", reported, count));
   const auto world_tick = st.current->tick() + 1;
   std::vector<world::event> spawn_events;
-  const auto states = world::gather_states(results);
+  auto states = world::gather_states(results);
   auto spawned = setup.spawner.spawn(*setup.station, states, world_tick, spawn_events);
   st.current =
       world::merge(*setup.station, world_tick,
                    std::chrono::duration<double>{static_cast<double>(world_tick) * setup.tick_s},
-                   results, spawned, std::move(spawn_events));
+                   std::move(states), results, spawned, std::move(spawn_events));
   write_trajectories(setup.trajectories, *st.current, setup.end_tick);
   if (setup.board) setup.board->publish(st.current);
   emit_events(ctx, *st.current);

@@ -86,12 +86,12 @@ void crowd::step() {
     results[i] = partition_step(*station_, *current_, owned_[i], bounds_[i], settings_.behaviour);
   }
   std::vector<event> spawn_events;
-  const auto states = gather_states(results);
+  auto states = gather_states(results);
   auto spawned = spawner_.spawn(*station_, states, tick, spawn_events);
   current_ =
       merge(*station_, tick,
             std::chrono::duration<double>{static_cast<double>(tick) * settings_.behaviour.tick_s},
-            results, spawned, std::move(spawn_events));
+            std::move(states), results, spawned, std::move(spawn_events));
   last_hand_overs_ = 0;
   for (std::size_t i = 0; i < bounds_.size(); ++i) owned_[i] = std::move(results[i].pedestrians);
   for (auto& r : results) {

@@ -58,10 +58,11 @@ std::vector<pedestrian_state> gather_states(std::span<const partition_result> re
 
 std::shared_ptr<const snapshot> merge(const station& where, std::uint64_t tick,
                                       std::chrono::duration<double> time,
+                                      std::vector<pedestrian_state> gathered,
                                       std::span<const partition_result> results,
                                       std::span<const pedestrian> spawned,
                                       std::vector<event> spawn_events) {
-  auto states = gather_states(results);
+  auto states = std::move(gathered);
   for (const auto& p : spawned) states.push_back(p.state);
   std::vector<event> events;
   for (const auto& r : results) events.insert(events.end(), r.events.begin(), r.events.end());

@@ -54,8 +54,11 @@ partition_result partition_step(const station& where, const snapshot& previous,
 
 /// Phase two: the next snapshot from every partition's result (pedestrians, handed-over
 /// pedestrians and events) plus the pedestrians spawned this tick and the spawner's events.
+/// `gathered` is gather_states(results), which the spawner has already needed: taken over
+/// rather than copied again.
 std::shared_ptr<const snapshot> merge(const station& where, std::uint64_t tick,
                                       std::chrono::duration<double> time,
+                                      std::vector<pedestrian_state> gathered,
                                       std::span<const partition_result> results,
                                       std::span<const pedestrian> spawned,
                                       std::vector<event> spawn_events = {});

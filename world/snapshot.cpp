@@ -10,27 +10,35 @@ namespace argus::world {
 snapshot::snapshot(const station& where, std::uint64_t tick, std::chrono::duration<double> time,
                    std::vector<pedestrian_state> pedestrians, std::vector<event> events)
     : tick_(tick), time_(time), pedestrians_(std::move(pedestrians)), events_(std::move(events)) {
-  std::sort(pedestrians_.begin(), pedestrians_.end(),
-            [](const pedestrian_state& a, const pedestrian_state& b) { return a.id < b.id; });
+  // The crowd hands them over in id order already (partitions step in id order, newcomers
+  // get new ids): checking is linear, sorting would not be.
+  const auto by_id = [](const pedestrian_state& a, const pedestrian_state& b) {
+    return a.id < b.id;
+  };
+  if (!std::is_sorted(pedestrians_.begin(), pedestrians_.end(), by_id)) {
+    std::sort(pedestrians_.begin(), pedestrians_.end(), by_id);
+  }
   std::stable_sort(events_.begin(), events_.end(),
                    [](const event& a, const event& b) { return a.pedestrian < b.pedestrian; });
   const vec2 size = where.plan().size_m;
   grid_w_ = std::max(1, static_cast<int>(std::ceil(size.x() / neighbour_cell_m)));
   grid_h_ = std::max(1, static_cast<int>(std::ceil(size.y() / neighbour_cell_m)));
-  // Counting sort by cell keeps id order within each cell.
+  // Counting sort by cell, keeping id order within each cell: counts, their running sums
+  // (each cell's end), then everyone placed from the back, each cell's end counting down to
+  // its start. No copy of the starts to fill from, which at 100 pedestrians in 5,000 cells
+  // cost more than the people.
   const auto cells = static_cast<std::size_t>(grid_w_) * grid_h_;
   cell_start_.assign(cells + 1, 0);
   std::vector<std::uint32_t> cell_of(pedestrians_.size());
   for (std::size_t i = 0; i < pedestrians_.size(); ++i) {
     const auto& p = pedestrians_[i].position;
     cell_of[i] = static_cast<std::uint32_t>(cell_y(p.y()) * grid_w_ + cell_x(p.x()));
-    ++cell_start_[cell_of[i] + 1];
+    ++cell_start_[cell_of[i]];
   }
-  for (std::size_t c = 0; c < cells; ++c) cell_start_[c + 1] += cell_start_[c];
+  for (std::size_t c = 1; c <= cells; ++c) cell_start_[c] += cell_start_[c - 1];
   neighbours_.resize(pedestrians_.size());
-  std::vector<std::uint32_t> fill(cell_start_.begin(), cell_start_.end() - 1);
-  for (std::size_t i = 0; i < pedestrians_.size(); ++i) {
-    neighbours_[fill[cell_of[i]]++] = neighbour(pedestrians_[i]);
+  for (std::size_t i = pedestrians_.size(); i-- > 0;) {
+    neighbours_[--cell_start_[cell_of[i]]] = neighbour(pedestrians_[i]);
   }
   queues_.assign(where.counter_count(), {});
   seat_holder_.assign(where.seats().size(), -1);

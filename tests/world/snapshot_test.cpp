@@ -65,6 +65,29 @@ TEST(snapshot, sifted_neighbours_keep_the_order) {
   EXPECT_EQ(sifted, plain);
 }
 
+// Within a cell the index keeps id order whatever order the people came in: the crowd's
+// step sums forces in visiting order, so the order is part of the result.
+TEST(snapshot, neighbours_in_a_cell_come_in_id_order) {
+  std::vector<pedestrian_state> crowd;
+  for (int k = 0; k < 60; ++k) {
+    const int id = (k * 37) % 61 + 1;  // ids 1..61 shuffled
+    crowd.push_back(at(id, 99.0 + 0.05 * (k % 40), 49.0 + 0.07 * (k % 25)));
+  }
+  snapshot s(penn(), 1, std::chrono::duration<double>{0.0}, crowd);
+  std::vector<std::pair<std::pair<int, int>, int>> seen;  // ((cell x, cell y), id)
+  s.for_each_near({100.0, 50.0}, [&](const neighbour& p) {
+    seen.push_back({{static_cast<int>(p.position.x() / snapshot::neighbour_cell_m),
+                     static_cast<int>(p.position.y() / snapshot::neighbour_cell_m)},
+                    p.id});
+  });
+  ASSERT_EQ(seen.size(), crowd.size());
+  for (std::size_t k = 1; k < seen.size(); ++k) {
+    if (seen[k].first == seen[k - 1].first) {
+      EXPECT_LT(seen[k - 1].second, seen[k].second);
+    }
+  }
+}
+
 TEST(snapshot, lines_are_ranked_by_join_tick_then_id) {
   auto a = at(7, 80, 86);
   a.counter = 0;
