@@ -38,9 +38,14 @@ partition_result partition_step(const station& where, const snapshot& previous,
     (bounds.contains(next->state.position) ? out.pedestrians : out.handed_over)
         .push_back(std::move(*next));
   }
+  // Stepped in the order owned, which is id order but for those handed over last tick: check
+  // (linear) before sorting (not).
   auto by_id = [](const pedestrian& a, const pedestrian& b) { return a.state.id < b.state.id; };
-  std::sort(out.pedestrians.begin(), out.pedestrians.end(), by_id);
-  std::sort(out.handed_over.begin(), out.handed_over.end(), by_id);
+  for (auto* list : {&out.pedestrians, &out.handed_over}) {
+    if (!std::is_sorted(list->begin(), list->end(), by_id)) {
+      std::sort(list->begin(), list->end(), by_id);
+    }
+  }
   return out;
 }
 

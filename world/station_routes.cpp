@@ -33,7 +33,9 @@ double station::distance_to(int field, const vec2& p) const {
   for (int dy = -1; dy <= 1; ++dy) {
     for (int dx = -1; dx <= 1; ++dx) {
       const float v = field_at(field, cx + dx, cy + dy);
-      if (v == unreachable) continue;
+      // A cell no lower than the best so far cannot beat it (the walk to it adds to v): no
+      // square root, no line of sight. Unreachable cells are infinite, so skipped here too.
+      if (static_cast<double>(v) >= best) continue;
       const vec2 centre{(cx + dx + 0.5) * settings_.cell_m, (cy + dy + 0.5) * settings_.cell_m};
       if (near_wall_[c] && !line_clear(p, centre)) continue;
       best = std::min(best, static_cast<double>(v) + (centre - p).norm());
