@@ -49,16 +49,9 @@ class snapshot {
   /// on the snapshot's content.
   template <class Visitor>
   void for_each_near(const vec2& p, Visitor&& visit) const {
-    const int cx = cell_x(p.x());
-    const int cy = cell_y(p.y());
-    for (int y = std::max(0, cy - 1); y <= std::min(grid_h_ - 1, cy + 1); ++y) {
-      const int row = y * grid_w_;
-      const int x0 = std::max(0, cx - 1);
-      const int x1 = std::min(grid_w_ - 1, cx + 1);
-      for (std::uint32_t k = cell_start_[row + x0]; k < cell_start_[row + x1 + 1]; ++k) {
-        visit(neighbours_[k]);
-      }
-    }
+    for_each_row_near(p, [&](std::uint32_t begin, std::uint32_t end) {
+      for (std::uint32_t k = begin; k < end; ++k) visit(neighbours_[k]);
+    });
   }
 
   /// Calls `visit(const neighbour&)` for every pedestrian of for_each_near's cells for whom
@@ -70,14 +63,8 @@ class snapshot {
   void for_each_near_where(const vec2& p, Keep&& keep, Visitor&& visit) const {
     constexpr std::size_t chunk = 128;
     std::array<std::uint32_t, chunk> picked;
-    const int cx = cell_x(p.x());
-    const int cy = cell_y(p.y());
-    for (int y = std::max(0, cy - 1); y <= std::min(grid_h_ - 1, cy + 1); ++y) {
-      const int row = y * grid_w_;
-      const int x0 = std::max(0, cx - 1);
-      const int x1 = std::min(grid_w_ - 1, cx + 1);
-      const std::uint32_t end = cell_start_[row + x1 + 1];
-      for (std::uint32_t k = cell_start_[row + x0]; k < end;) {
+    for_each_row_near(p, [&](std::uint32_t k, std::uint32_t end) {
+      while (k < end) {
         const std::uint32_t stop = std::min<std::uint32_t>(end, k + chunk);
         std::size_t count = 0;
         for (; k < stop; ++k) {
@@ -86,7 +73,7 @@ class snapshot {
         }
         for (std::size_t i = 0; i < count; ++i) visit(neighbours_[picked[i]]);
       }
-    }
+    });
   }
 
   /// Number of pedestrians in counter `counter`'s line (walking to it, waiting or served).
@@ -102,6 +89,20 @@ class snapshot {
   int seat_holder(int seat) const { return seat_holder_[seat]; }
 
  private:
+  /// Calls `rows(begin, end)` with the index range of each row of the 3 x 3 cells around `p`
+  /// (a row's three cells are adjacent in the index), in increasing y.
+  template <class Rows>
+  void for_each_row_near(const vec2& p, Rows&& rows) const {
+    const int cx = cell_x(p.x());
+    const int cy = cell_y(p.y());
+    const int x0 = std::max(0, cx - 1);
+    const int x1 = std::min(grid_w_ - 1, cx + 1);
+    for (int y = std::max(0, cy - 1); y <= std::min(grid_h_ - 1, cy + 1); ++y) {
+      const int row = y * grid_w_;
+      rows(cell_start_[row + x0], cell_start_[row + x1 + 1]);
+    }
+  }
+
   int cell_x(double x) const {
     return std::clamp(static_cast<int>(x / neighbour_cell_m), 0, grid_w_ - 1);
   }
