@@ -614,7 +614,8 @@ class stepper {
     // (the repulsion, the constraints, the arch test), or someone farther in the lane ahead
     // who is close enough for the headway to slow us or coming the other way (the side step).
     // Everyone else would only lose a comparison below, so leaving them out changes no result.
-    // The tests repeat the visit's own arithmetic; the margins only widen them.
+    // The tests repeat the visit's own arithmetic; the margins only widen them. The distance
+    // floor leaves out the walker itself.
     constexpr double reach_squared = snapshot::neighbour_cell_m * snapshot::neighbour_cell_m;
     const double headway_reach_m = settings_.headway_s * v0 + 1e-6;
     const double lane_margin_m = settings_.sidestep_margin_m + 1e-9;
@@ -634,7 +635,6 @@ class stepper {
       return in_reach & (near | (in_lane & (slows | oncoming)));
     };
     previous_.for_each_near_where(s_.position, matters, [&](const neighbour& other) {
-      if (other.id == s_.id) return;
       const vec2 offset = other.position - s_.position;
       const double distance_squared = offset.squaredNorm();
       const double contact = radius + other.radius_m();

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "world/layout_loader.hpp"
+#include "world/rng.hpp"
 #include "world/station.hpp"
 
 namespace argus::world {
@@ -46,12 +47,11 @@ TEST(snapshot, neighbours_cover_two_metres) {
 // 400 people in 6 x 6 m put more than one sifting chunk (128) into a row of cells.
 TEST(snapshot, sifted_neighbours_keep_the_order) {
   std::vector<pedestrian_state> crowd;
-  std::uint64_t state = 12345;
-  auto uniform = [&] {
-    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
-    return static_cast<double>(state >> 11) / 9007199254740992.0;
-  };
-  for (int id = 1; id <= 400; ++id) crowd.push_back(at(id, 97 + 6 * uniform(), 47 + 6 * uniform()));
+  rng random(12345);
+  for (int id = 1; id <= 400; ++id) {
+    const double x = random.uniform(97.0, 103.0);
+    crowd.push_back(at(id, x, random.uniform(47.0, 53.0)));
+  }
   snapshot s(penn(), 1, std::chrono::duration<double>{0.0}, crowd);
   const vec2 here{100.0, 50.0};
   auto keep = [&](const neighbour& p) { return (p.position - here).x() > 0.3; };
