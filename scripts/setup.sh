@@ -36,7 +36,15 @@ argus_build() {
   if [ ! -f "$dir/build.ninja" ]; then
     cmake -S "$ARGUS_ROOT" -B "$dir" -G Ninja -DCMAKE_CXX_COMPILER_LAUNCHER=ccache "$@"
   fi
-  cmake --build "$dir" --parallel "$(nproc)"
+  cmake --build "$dir" --parallel "$(nproc)" && return 0
+  # A compile once failed in CI with no diagnostic at all (a killed compiler or a full disk
+  # leaves none); the state of the machine is printed, and the build is tried once more
+  # without ccache: an error in the code fails again, with its message.
+  echo "argus: the build in $dir failed; free disk and memory now:" >&2
+  df -h "$dir" >&2 || true
+  free -m >&2 || true
+  echo "argus: building $dir once more, without ccache" >&2
+  CCACHE_DISABLE=1 cmake --build "$dir" --parallel "$(nproc)"
 }
 
 argus_install_missing

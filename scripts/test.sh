@@ -11,6 +11,7 @@ quick=0
 [ "${1:-}" = "--quick" ] && quick=1
 jobs="$(nproc)"
 
+echo "== free on this disk: $(df -h --output=avail . | tail -1 | tr -d ' '); memory: $(free -g | awk '/^Mem/ {print $7}') GiB available"
 echo "== Release build and tests"
 argus_build build -DCMAKE_BUILD_TYPE=Release
 ctest --test-dir build --output-on-failure -j "$jobs"
