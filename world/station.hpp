@@ -139,10 +139,12 @@ class station {
   int grid_height() const noexcept { return grid_h_; }
   double cell_m() const noexcept { return settings_.cell_m; }
   bool blocked(int cx, int cy) const { return blocked_[cy * grid_w_ + cx] != 0; }
+  /// Target `field`'s walking distance from the centre of grid cell (cx, cy): +inf off the
+  /// grid and where unreachable.
+  float field_at(int field, int cx, int cy) const;
 
  private:
   int cell_index(const vec2& p) const;
-  float field_at(int field, int cx, int cy) const;
   void build_segments();
   void build_segment_index();
   void build_grid();

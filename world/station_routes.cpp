@@ -1,6 +1,7 @@
 // The station's route queries: walking distance and the way to walk, read off a target's
 // distance field between the navigation grid's cell centres.
 
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -13,10 +14,22 @@ namespace {
 constexpr float unreachable = std::numeric_limits<float>::infinity();
 
 /// The grid direction (station's 8-neighbour numbering: 0 = +x, counter-clockwise) of a step.
-int direction_of(int dx, int dy) {
+constexpr int direction_of(int dx, int dy) {
   constexpr int table[3][3] = {{5, 6, 7}, {4, -1, 0}, {3, 2, 1}};
   return table[dy + 1][dx + 1];
 }
+
+/// edge_towards[a][b]: the bit of the grid edge from stencil corner a to corner b (corner k
+/// is cell (x0 + k % 2, y0 + k / 2)), none from a corner to itself.
+constexpr auto edge_towards = [] {
+  std::array<std::array<unsigned, 4>, 4> bits{};
+  for (int a = 0; a < 4; ++a) {
+    for (int b = 0; b < 4; ++b) {
+      if (a != b) bits[a][b] = 1u << direction_of(b % 2 - a % 2, b / 2 - a / 2);
+    }
+  }
+  return bits;
+}();
 
 }  // namespace
 
@@ -30,14 +43,26 @@ double station::distance_to(int field, const vec2& p) const {
   const int cx = c % grid_w_;
   const int cy = c / grid_w_;
   double best = std::numeric_limits<double>::infinity();
+  if (!near_wall_[c]) {
+    // In the open every cell is in sight: nine candidates and no branch on their values,
+    // which would go either way at random (unreachable ones are infinite and never win).
+    for (int dy = -1; dy <= 1; ++dy) {
+      for (int dx = -1; dx <= 1; ++dx) {
+        const vec2 centre{(cx + dx + 0.5) * settings_.cell_m, (cy + dy + 0.5) * settings_.cell_m};
+        best = std::min(
+            best, static_cast<double>(field_at(field, cx + dx, cy + dy)) + (centre - p).norm());
+      }
+    }
+    return best;
+  }
   for (int dy = -1; dy <= 1; ++dy) {
     for (int dx = -1; dx <= 1; ++dx) {
       const float v = field_at(field, cx + dx, cy + dy);
       // A cell no lower than the best so far cannot beat it (the walk to it adds to v): no
-      // square root, no line of sight. Unreachable cells are infinite, so skipped here too.
+      // line of sight to test. Unreachable cells are infinite, so skipped here too.
       if (static_cast<double>(v) >= best) continue;
       const vec2 centre{(cx + dx + 0.5) * settings_.cell_m, (cy + dy + 0.5) * settings_.cell_m};
-      if (near_wall_[c] && !line_clear(p, centre)) continue;
+      if (!line_clear(p, centre)) continue;
       best = std::min(best, static_cast<double>(v) + (centre - p).norm());
     }
   }
@@ -115,12 +140,10 @@ vec2 station::direction_to(int field, const vec2& p) const {
   if (base >= 0) {
     const int base_cell = (y0 + base / 2) * grid_w_ + x0 + base % 2;
     double weight_sum = 0.0;
+    const unsigned base_edges = edge_blocked_[base_cell];
     for (int k = 0; k < 4; ++k) {
-      if (!std::isfinite(f[k])) continue;
-      if (k != base &&
-          (edge_blocked_[base_cell] & (1u << direction_of(k % 2 - base % 2, k / 2 - base / 2)))) {
-        continue;
-      }
+      // One test, rarely true, instead of `k != base` first, which goes either way at random.
+      if (!std::isfinite(f[k]) || (base_edges & edge_towards[base][k])) continue;
       const int cx = x0 + k % 2;
       const int cy = y0 + k / 2;
       const auto open = edge_blocked_[cy * grid_w_ + cx];

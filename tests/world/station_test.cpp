@@ -5,10 +5,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <limits>
 #include <string>
 #include <vector>
 
 #include "world/layout_loader.hpp"
+#include "world/rng.hpp"
 
 namespace argus::world {
 namespace {
@@ -36,6 +38,41 @@ TEST(station, following_the_field_reaches_every_stairs_from_the_arcade) {
     // The path is not much longer than the field says.
     EXPECT_LT(steps * 0.1, start * 1.15);
   }
+}
+
+TEST(station, the_walking_distance_is_the_best_cell_in_sight_plus_the_straight_walk) {
+  // distance_to's definition, checked by brute force in the open (where it tests no line of
+  // sight) and beside walls and jambs (where it does): of the 3 x 3 cells around p, those in
+  // sight, each the cell's field value plus the straight walk to its centre.
+  const auto& where = penn();
+  const double cell = where.cell_m();
+  const int field = where.target(target_kind::stairs, 2);
+  rng draw(11);
+  int checked = 0;
+  int beside_walls = 0;
+  for (int i = 0; i < 4000; ++i) {
+    const vec2 p{draw.uniform(1.0, 199.0), draw.uniform(1.0, 99.0)};
+    if (!where.walkable(p)) continue;
+    const int cx = static_cast<int>(p.x() / cell);
+    const int cy = static_cast<int>(p.y() / cell);
+    double expected = std::numeric_limits<double>::infinity();
+    bool all_in_sight = true;
+    for (int y = cy - 1; y <= cy + 1; ++y) {
+      for (int x = cx - 1; x <= cx + 1; ++x) {
+        const vec2 centre{(x + 0.5) * cell, (y + 0.5) * cell};
+        if (!where.line_clear(p, centre)) {
+          all_in_sight = false;
+          continue;
+        }
+        expected = std::min(expected, where.field_at(field, x, y) + (centre - p).norm());
+      }
+    }
+    ASSERT_EQ(where.distance_to(field, p), expected) << p.transpose();
+    ++checked;
+    beside_walls += all_in_sight ? 0 : 1;
+  }
+  EXPECT_GT(checked, 2000);
+  EXPECT_GT(beside_walls, 20);
 }
 
 TEST(station, walls_block_the_grid_across_them) {
