@@ -42,28 +42,18 @@ double station::distance_to(int field, const vec2& p) const {
   const int c = cell_index(p);
   const int cx = c % grid_w_;
   const int cy = c / grid_w_;
+  // Beside a wall a cell counts only if it is in sight; a cell no lower than the best so far
+  // cannot beat it (the walk to it adds to v), so its sight is not tested. In the open all
+  // nine count and nothing branches on their values, which go either way at random
+  // (unreachable cells are infinite and never win).
+  const bool beside_wall = near_wall_[c] != 0;
   double best = std::numeric_limits<double>::infinity();
-  if (!near_wall_[c]) {
-    // In the open every cell is in sight: nine candidates and no branch on their values,
-    // which would go either way at random (unreachable ones are infinite and never win).
-    for (int dy = -1; dy <= 1; ++dy) {
-      for (int dx = -1; dx <= 1; ++dx) {
-        const vec2 centre{(cx + dx + 0.5) * settings_.cell_m, (cy + dy + 0.5) * settings_.cell_m};
-        best = std::min(
-            best, static_cast<double>(field_at(field, cx + dx, cy + dy)) + (centre - p).norm());
-      }
-    }
-    return best;
-  }
   for (int dy = -1; dy <= 1; ++dy) {
     for (int dx = -1; dx <= 1; ++dx) {
-      const float v = field_at(field, cx + dx, cy + dy);
-      // A cell no lower than the best so far cannot beat it (the walk to it adds to v): no
-      // line of sight to test. Unreachable cells are infinite, so skipped here too.
-      if (static_cast<double>(v) >= best) continue;
+      const double v = field_at(field, cx + dx, cy + dy);
       const vec2 centre{(cx + dx + 0.5) * settings_.cell_m, (cy + dy + 0.5) * settings_.cell_m};
-      if (!line_clear(p, centre)) continue;
-      best = std::min(best, static_cast<double>(v) + (centre - p).norm());
+      if (beside_wall && (v >= best || !line_clear(p, centre))) continue;
+      best = std::min(best, v + (centre - p).norm());
     }
   }
   return best;
