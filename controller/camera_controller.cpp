@@ -219,9 +219,9 @@ void camera_controller::take_message(const received_message& m, controller_outpu
         } else if constexpr (std::is_same_v<T, protocol::relevance_bid>) {
           on_bid(m.origin, msg, out);
         } else if constexpr (std::is_same_v<T, protocol::join>) {
-          on_join(msg, out);
+          on_join(m.origin, msg, out);
         } else if constexpr (std::is_same_v<T, protocol::status>) {
-          on_status(msg, out);
+          on_status(m.origin, msg, out);
         } else if constexpr (std::is_same_v<T, protocol::handover>) {
           on_handover(msg, out);
         } else if constexpr (std::is_same_v<T, protocol::demotion>) {
@@ -289,7 +289,10 @@ void camera_controller::on_query(int from, const protocol::query_relevance& q,
 void camera_controller::on_bid(int from, const protocol::relevance_bid& b, controller_output& out) {
   if (!task_ || task_->task != b.task || b.leader != leader_) return;
   if (role_ == group_role::member) {
-    send(leader_, b, out);  // members forward group messages to their leader
+    // Members forward group messages to their leader: a bidder's own bid, never one another
+    // member forwarded (two members each taking the other for its leader, in the moment a
+    // demotion is on its way, would pass it back and forth for good).
+    if (from == b.bidder) send(leader_, b, out);
     return;
   }
   if (!auction_ || b.auction != auction_->id) return;
@@ -298,11 +301,12 @@ void camera_controller::on_bid(int from, const protocol::relevance_bid& b, contr
   if (!fresh && b.relevance > it->second.relevance) it->second = b;
 }
 
-void camera_controller::on_join(const protocol::join& j, controller_output& out) {
+void camera_controller::on_join(int from, const protocol::join& j, controller_output& out) {
   if (cancelled_.count(j.task.task) != 0) return;
   if (j.invitee != me_.id) {
-    // A copy for the member that relayed the invitee's bid: pass it on.
-    if (task_ && task_->task == j.task.task && role_ == group_role::member && leader_ == j.leader) {
+    // A copy for the member that relayed the invitee's bid, from the leader itself: pass it on.
+    if (task_ && task_->task == j.task.task && role_ == group_role::member && leader_ == j.leader &&
+        from == j.leader) {
       send(j.invitee, j, out);
       relayed_for_.insert(j.invitee);
     }
@@ -332,7 +336,7 @@ void camera_controller::on_join(const protocol::join& j, controller_output& out)
   send(protocol::broadcast, own_status(), out);
 }
 
-void camera_controller::on_status(const protocol::status& s, controller_output& out) {
+void camera_controller::on_status(int from, const protocol::status& s, controller_output& out) {
   // A node that missed the cancellation (lost messages, out of reach) hears it again.
   if (cancelled_.count(s.task) != 0) {
     send(s.sender, protocol::task_cancel{s.task, me_.id}, out);
@@ -355,9 +359,17 @@ void camera_controller::on_status(const protocol::status& s, controller_output& 
         std::find(leader_members_->begin(), leader_members_->end(), s.sender) ==
             leader_members_->end())
       relayed_for_.insert(s.sender);
-    if (s.leader == leader_ && relayed_for_.count(s.sender) != 0) send(leader_, s, out);
+    // Only first-hand statuses are relayed, one hop of relay each way: two members that each
+    // relay for the other would otherwise pass every status of the leader back and forth for
+    // good, a new copy joining the circle each heartbeat (penn_station seed 6 with the
+    // re-taken model grew to 24 GB at 690 s), and keep a failed leader alive on its echoes.
+    const bool first_hand = from == s.sender;
+    if (first_hand && s.leader == leader_ && relayed_for_.count(s.sender) != 0)
+      send(leader_, s, out);
     if (s.sender != leader_) return;
-    for (int far : relayed_for_) send(far, s, out);
+    if (first_hand)
+      for (int far : relayed_for_)
+        if (far != from) send(far, s, out);
     last_leader_status_ = now_;
     leader_members_ = s.members;
     if (s.leader != s.sender) {

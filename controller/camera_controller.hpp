@@ -106,8 +106,8 @@ class camera_controller {
   void take_message(const received_message& m, controller_output& out);
   void on_query(int from, const protocol::query_relevance& q, controller_output& out);
   void on_bid(int from, const protocol::relevance_bid& b, controller_output& out);
-  void on_join(const protocol::join& j, controller_output& out);
-  void on_status(const protocol::status& s, controller_output& out);
+  void on_join(int from, const protocol::join& j, controller_output& out);
+  void on_status(int from, const protocol::status& s, controller_output& out);
   void on_handover(const protocol::handover& h, controller_output& out);
   void on_demotion(const protocol::demotion& d, controller_output& out);
   void on_csp_query(int from, const protocol::csp_query& q, controller_output& out);

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "tests/controller/protocol_harness.hpp"
 
 namespace argus::controller {
@@ -166,6 +168,58 @@ TEST(group_protocol, a_leader_merged_through_a_member_hears_its_new_leader_throu
   // Demoted once, and not taking the leader it cannot hear for failed every 3 s.
   EXPECT_LE(h.count("leader_changed", 1), 2u);
   EXPECT_EQ(h.count("leader_changed", 3), 0u);
+}
+
+// Camera 3 follows leader 16 and relays for camera 9, which 16's last status did not list (out
+// of 16's reach, as far as 3 can tell). 16's own statuses go on to 9; a copy of one that another
+// member relayed must not: in seed 6 of penn_station (with the re-taken model) members 3, 4
+// and 9 of 16's group each relayed for the other two, so each of 16's statuses went round
+// them for good, a new one joining every heartbeat, until the run held 24 GB at 690 s.
+TEST(group_protocol, a_member_relays_first_hand_statuses_only) {
+  const auto s = test_scenario({3});
+  camera_controller member(node_identity::from(s.cameras.front()), s);
+  const auto task = test_task(1, 4);
+  const auto statuses_to = [](const controller_output& out, int to) {
+    return std::count_if(out.messages.begin(), out.messages.end(), [to](const auto& m) {
+      return m.destination == to && std::holds_alternative<protocol::status>(m.message);
+    });
+  };
+  const auto leader_status = [&task](std::vector<int> members) {
+    return protocol::status{task.task, 16, 16, 0.9, 1, 4, std::move(members), false};
+  };
+  std::int64_t tick = 0;
+  const auto step = [&](std::vector<received_message> messages) {
+    controller_input in;
+    in.tick = tick++;
+    in.pose = node_identity::from(s.cameras.front()).home;
+    in.messages = std::move(messages);
+    return member.step(in);
+  };
+  step({{16, protocol::join{task, 16, 3, false}}});
+  ASSERT_EQ(member.leader(), 16);
+  step({{16, leader_status({3})}});
+  // 9 follows 16 but is not on its list: 3 relays for it, its status up to 16...
+  const auto up = step({{9, protocol::status{task.task, 9, 16, 0.7, 1, 4, {}, false}}});
+  EXPECT_EQ(statuses_to(up, 16), 1);
+  // ...and 16's own statuses down to it.
+  EXPECT_EQ(statuses_to(step({{16, leader_status({3})}}), 9), 1);
+  // A copy of 16's status that member 4 relayed goes no further: not to 9, not back to 4.
+  const auto relayed = step({{4, leader_status({3})}});
+  EXPECT_EQ(statuses_to(relayed, 9), 0);
+  EXPECT_EQ(statuses_to(relayed, 4), 0);
+  EXPECT_EQ(member.leader(), 16);
+  // Nor does a copy of 9's status that another member relayed go up again.
+  EXPECT_EQ(statuses_to(step({{4, protocol::status{task.task, 9, 16, 0.7, 1, 4, {}, false}}}), 16),
+            0);
+  // Bids likewise: a bidder's own bid goes up to the leader, a relayed copy does not.
+  const auto bids_to_leader = [](const controller_output& out) {
+    return std::count_if(out.messages.begin(), out.messages.end(), [](const auto& m) {
+      return m.destination == 16 && std::holds_alternative<protocol::relevance_bid>(m.message);
+    });
+  };
+  const protocol::relevance_bid bid{task.task, 16, 1, 5, 0.6, false, false, std::nullopt, 0};
+  EXPECT_EQ(bids_to_leader(step({{5, bid}})), 1);
+  EXPECT_EQ(bids_to_leader(step({{4, bid}})), 0);
 }
 
 // Camera 3 (the highest id) leads 1 and 2, loses its target and hands the group to one of them.
