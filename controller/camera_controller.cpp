@@ -367,9 +367,10 @@ void camera_controller::on_status(int from, const protocol::status& s, controlle
     if (first_hand && s.leader == leader_ && relayed_for_.count(s.sender) != 0)
       send(leader_, s, out);
     if (s.sender != leader_) return;
+    // Not back to the leader: a node this one relayed for may since have become its leader.
     if (first_hand)
       for (int far : relayed_for_)
-        if (far != from) send(far, s, out);
+        if (far != leader_) send(far, s, out);
     last_leader_status_ = now_;
     leader_members_ = s.members;
     if (s.leader != s.sender) {
