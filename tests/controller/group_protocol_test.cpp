@@ -179,10 +179,14 @@ TEST(group_protocol, a_member_relays_first_hand_statuses_only) {
   const auto s = test_scenario({3});
   camera_controller member(node_identity::from(s.cameras.front()), s);
   const auto task = test_task(1, 4);
-  const auto statuses_to = [](const controller_output& out, int to) {
+  // How many messages of kind T this step sent to `to`.
+  const auto sent = []<typename T>(const controller_output& out, int to) {
     return std::count_if(out.messages.begin(), out.messages.end(), [to](const auto& m) {
-      return m.destination == to && std::holds_alternative<protocol::status>(m.message);
+      return m.destination == to && std::holds_alternative<T>(m.message);
     });
+  };
+  const auto statuses_to = [&sent](const controller_output& out, int to) {
+    return sent.template operator()<protocol::status>(out, to);
   };
   const auto leader_status = [&task](std::vector<int> members) {
     return protocol::status{task.task, 16, 16, 0.9, 1, 4, std::move(members), false};
@@ -212,14 +216,13 @@ TEST(group_protocol, a_member_relays_first_hand_statuses_only) {
   EXPECT_EQ(statuses_to(step({{4, protocol::status{task.task, 9, 16, 0.7, 1, 4, {}, false}}}), 16),
             0);
   // Bids likewise: a bidder's own bid goes up to the leader, a relayed copy does not.
-  const auto bids_to_leader = [](const controller_output& out) {
-    return std::count_if(out.messages.begin(), out.messages.end(), [](const auto& m) {
-      return m.destination == 16 && std::holds_alternative<protocol::relevance_bid>(m.message);
-    });
-  };
   const protocol::relevance_bid bid{task.task, 16, 1, 5, 0.6, false, false, std::nullopt, 0};
-  EXPECT_EQ(bids_to_leader(step({{5, bid}})), 1);
-  EXPECT_EQ(bids_to_leader(step({{4, bid}})), 0);
+  EXPECT_EQ(sent.template operator()<protocol::relevance_bid>(step({{5, bid}}), 16), 1);
+  EXPECT_EQ(sent.template operator()<protocol::relevance_bid>(step({{4, bid}}), 16), 0);
+  // And joins: the leader's own copy goes on to the invitee, a copy from anyone else does not.
+  const protocol::join join{task, 16, 5, false};
+  EXPECT_EQ(sent.template operator()<protocol::join>(step({{16, join}}), 5), 1);
+  EXPECT_EQ(sent.template operator()<protocol::join>(step({{4, join}}), 5), 0);
 }
 
 // Camera 3 (the highest id) leads 1 and 2, loses its target and hands the group to one of them.
