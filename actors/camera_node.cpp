@@ -415,6 +415,7 @@ void finish_turn(node_actor* self, const cv::Mat& image) {
     st.looks = std::move(out.looks);
   }
   st.head->step(st.tick_length);
+  if (st.world && st.world->poses) st.world->poses->put(st.camera_id, ctx.tick(), st.head->state());
   if (st.world && st.world->console) {
     const auto pose = st.head->state();
     st.world->console->publish_camera(st.camera_id, ctx.tick(), pose.pan_deg, pose.tilt_deg,

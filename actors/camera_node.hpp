@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <map>
 
+#include "actors/camera_pose_board.hpp"
 #include "actors/operator_board.hpp"
 #include "actors/oracle_board.hpp"
 #include "actors/participant_info.hpp"
@@ -45,6 +46,8 @@ struct camera_world {
   /// Where nodes show the live console their pose, frame and traffic (display only; null for
   /// none).
   std::shared_ptr<live::console_state> console;
+  /// Where nodes leave the pose of their next frame for the video recorder; null for none.
+  std::shared_ptr<camera_pose_board> poses;
 };
 
 /// How camera `camera` takes part in the clock: phase cameras, every tick (it senses each frame).

@@ -125,6 +125,8 @@ run_outcome run_scenario(const config::scenario& scenario, const run_options& op
     vs.tick_seconds = tick_seconds;
     vs.end_tick = end_tick;
     vs.render_pool = pool.front;
+    cameras_world->poses = std::make_shared<camera_pose_board>();
+    vs.poses = cameras_world->poses;
     caf::actor video;
     try {
       video = spawn_video_recorder(system, std::move(vs));

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <vector>
 
+#include "actors/camera_pose_board.hpp"
 #include "actors/participant_info.hpp"
 #include "caf/actor.hpp"
 #include "caf/fwd.hpp"
@@ -35,18 +36,23 @@ struct video_settings {
   std::int64_t end_tick = 0;
   /// The render pool's front (`spawn_render_pool`).
   caf::actor render_pool;
+  /// Where the camera nodes leave their poses; null: every camera at its default pose.
+  std::shared_ptr<const camera_pose_board> poses;
 };
 
 /// Spawns the video recorder of a run. Its snapshots come from the world coordinator (add it
 /// to `world_run_settings::snapshot_observers` with `participant_ids::video_recorder`).
 ///
 /// At clock tick t it takes the snapshot published in phase network of t (world tick t + 1),
-/// asks the render pool for every camera's frame at the camera's default pose (cameras do not
-/// move yet) at the snapshot's time, each camera's imaging model travelling with its request
+/// asks the render pool for every camera's frame at the snapshot's time, at the pose the camera
+/// sees it from (the pose its node left on `poses` before tick t, the default pose before its
+/// first turn), each camera's imaging model travelling with its request
 /// so its noise is drawn in tick order whichever worker renders, tiles the answers into one
 /// mosaic frame, appends it to the video and only then acknowledges the tick: the video has
 /// exactly one frame per tick. A tick without a snapshot emits `video_out_of_step` and adds no
-/// frame; a frame the pool fails to render emits `video_render_failed` and shows black.
+/// frame; a frame the pool fails to render emits `video_render_failed` and shows black. A camera
+/// whose node did not take its turn in tick t - 1 (crashed) shows its last view in grey,
+/// marked DOWN.
 ///
 /// The file is opened here, on the calling thread: throws std::runtime_error naming the file
 /// when it cannot be written.

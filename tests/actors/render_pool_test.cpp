@@ -9,9 +9,12 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <map>
 #include <opencv2/core.hpp>
 #include <opencv2/videoio.hpp>
 #include <set>
+#include <sstream>
 
 #include "actors/run_scenario.hpp"
 #include "actors/system_config.hpp"
@@ -92,33 +95,59 @@ TEST(render_pool, renders_the_same_bytes_as_a_direct_renderer_whichever_worker_s
   caf::anon_send_exit(pool.front, caf::exit_reason::user_shutdown);
 }
 
-TEST(render_pool, run_with_video_writes_one_frame_per_tick) {
-  auto scenario = config::load_scenario(ARGUS_SOURCE_DIR "/scenarios/penn_station.yaml");
-  scenario.run.duration = std::chrono::duration<double>{2.0};
-  scenario.run.threads = 2;
-  scenario.run.output_dir = std::filesystem::temp_directory_path() / "argus_render_pool_test";
+// What a run's video is checked against: the scenario's cameras in the video's (id) order, its
+// crowd stepped here, a renderer and the mosaic's layout at 160 x 120 tiles.
+struct direct_scene {
+  explicit direct_scene(const config::scenario& scenario)
+      : cameras(by_id(scenario.cameras)),
+        station(world::station::load(world::layout_path(scenario))),
+        crowd(station, world::crowd_settings::from(scenario)),
+        direct(station),
+        layout(vision::feed_mosaic_layout::for_feeds(cameras.size(), 160, 120)) {}
+
+  static std::vector<config::camera_settings> by_id(std::vector<config::camera_settings> c) {
+    std::sort(c.begin(), c.end(), [](const auto& a, const auto& b) { return a.id < b.id; });
+    return c;
+  }
+
+  std::vector<config::camera_settings> cameras;
+  std::shared_ptr<const world::station> station;
+  world::crowd crowd;
+  vision::renderer direct;
+  vision::feed_mosaic_layout layout;
+};
+
+// Runs `scenario` afresh with a video of 160 x 120 tiles.
+run_outcome run_with_video(const config::scenario& scenario) {
   std::filesystem::remove_all(scenario.run.output_dir);
   run_options options;
   options.video = true;
   options.video_width_px = 160;
   options.video_height_px = 120;
-  auto outcome = run_scenario(scenario, options);
+  return run_scenario(scenario, options);
+}
+
+TEST(render_pool, run_with_video_writes_one_frame_per_tick) {
+  auto scenario = config::load_scenario(ARGUS_SOURCE_DIR "/scenarios/penn_station.yaml");
+  scenario.run.duration = std::chrono::duration<double>{2.0};
+  scenario.run.threads = 2;
+  scenario.run.output_dir = std::filesystem::temp_directory_path() / "argus_render_pool_test";
+  const auto outcome = run_with_video(scenario);
   const auto file = outcome.output_dir / "video" / "feeds.avi";
   ASSERT_TRUE(std::filesystem::exists(file));
   EXPECT_FALSE(std::filesystem::exists(outcome.output_dir / "video" / "feeds.partial.avi"));
   cv::VideoCapture video(file.string());
   ASSERT_TRUE(video.isOpened());
 
-  // What each frame must show: frame k is every camera's degraded view, at its default pose,
-  // of the crowd after k + 1 steps (the recorder's snapshot of clock tick k), rendered here
-  // directly, each camera's imaging model applied to its frames in tick order.
-  auto cameras = scenario.cameras;
-  std::sort(cameras.begin(), cameras.end(),
-            [](const auto& a, const auto& b) { return a.id < b.id; });
-  const auto station = world::station::load(world::layout_path(scenario));
-  world::crowd crowd(station, world::crowd_settings::from(scenario));
-  vision::renderer direct(station);
-  const auto layout = vision::feed_mosaic_layout::for_feeds(cameras.size(), 160, 120);
+  // What each frame must show: frame k is every camera's degraded view, at its default pose (no
+  // task in the first 2 s, so no camera moves), of the crowd after k + 1 steps (the recorder's
+  // snapshot of clock tick k), rendered here directly, each camera's imaging model applied to
+  // its frames in tick order.
+  direct_scene scene(scenario);
+  const auto& cameras = scene.cameras;
+  auto& crowd = scene.crowd;
+  auto& direct = scene.direct;
+  const auto& layout = scene.layout;
   std::vector<vision::camera_view> views;
   std::vector<vision::imaging_model> models;
   for (const auto& c : cameras) {
@@ -160,6 +189,81 @@ TEST(render_pool, run_with_video_writes_one_frame_per_tick) {
               static_cast<long long>(frames), worst_psnr_db);
   EXPECT_EQ(frames, outcome.result.ticks);
   EXPECT_EQ(outcome.result.ticks, 30);
+}
+
+// poses.csv's rows by camera: from which world tick on the camera looked with which pose.
+std::map<int, std::map<std::int64_t, vision::ptz_state>> read_poses(
+    const std::filesystem::path& file) {
+  std::map<int, std::map<std::int64_t, vision::ptz_state>> out;
+  std::ifstream in(file);
+  std::string line;
+  std::getline(in, line);  // tick,t,camera,pan,tilt,fov,state
+  while (std::getline(in, line)) {
+    std::istringstream row(line);
+    std::string cell[7];
+    for (auto& c : cell) std::getline(row, c, ',');
+    out[std::stoi(cell[2])][std::stoll(cell[0])] = {std::stod(cell[3]), std::stod(cell[4]),
+                                                    std::stod(cell[5])};
+  }
+  return out;
+}
+
+TEST(render_pool, run_with_video_shows_each_camera_at_its_pose) {
+  // Seed 5: camera 7 takes a pedestrian at 10.5 s and turns and zooms after her; every tile of
+  // every frame compared must show its camera's view at the pose its node saw that tick with
+  // (poses.csv), not the default pose.
+  auto scenario = config::load_scenario(ARGUS_SOURCE_DIR "/scenarios/penn_station.yaml");
+  scenario.run.seed = 5;
+  scenario.run.duration = std::chrono::duration<double>{11.6};
+  scenario.run.threads = 2;
+  scenario.run.output_dir = std::filesystem::temp_directory_path() / "argus_video_pose_test";
+  // Raw frames, so that a tile can be compared with a render of any one frame (a camera's
+  // noise depends on every frame before).
+  for (auto& c : scenario.cameras) {
+    config::imaging_model raw;
+    raw.width_px = c.imaging.width_px;
+    raw.height_px = c.imaging.height_px;
+    c.imaging = raw;
+  }
+  const auto outcome = run_with_video(scenario);
+  cv::VideoCapture video((outcome.output_dir / "video" / "feeds.avi").string());
+  ASSERT_TRUE(video.isOpened());
+  const auto poses = read_poses(outcome.output_dir / "poses.csv");
+
+  direct_scene scene(scenario);
+  const auto& cameras = scene.cameras;
+  auto& crowd = scene.crowd;
+  auto& direct = scene.direct;
+  const auto& layout = scene.layout;
+  std::int64_t frames = 0, moved = 0;
+  double worst_psnr_db = 1e9;
+  cv::Mat image;
+  while (video.read(image)) {
+    ++frames;
+    crowd.step();
+    // The frames before the task and the last second, with the camera moving.
+    if (frames > 5 && frames < outcome.result.ticks - 15) continue;
+    const auto& frame = *crowd.current();
+    for (std::size_t k = 0; k < cameras.size(); ++k) {
+      vision::camera_view view{vision::camera_placement::from(cameras[k]),
+                               vision::ptz_camera::from(cameras[k]).state(), 160, 120};
+      const auto home = view.pose;
+      if (const auto it = poses.find(cameras[k].id); it != poses.end()) {
+        const auto row = it->second.upper_bound(static_cast<std::int64_t>(frame.tick()));
+        if (row != it->second.begin()) view.pose = std::prev(row)->second;
+      }
+      if (!(view.pose == home)) ++moved;
+      cv::Mat expected = direct.render(view, frame, frame.time().count());
+      vision::label_feed(expected, cameras[k].id);
+      const double psnr_db = cv::PSNR(image(layout.tile(k)), expected);
+      worst_psnr_db = std::min(worst_psnr_db, psnr_db);
+      EXPECT_GT(psnr_db, 25.0) << "frame " << frames << " camera " << cameras[k].id;
+    }
+  }
+  std::printf("[ video    ] %lld tiles of a moved camera; worst tile PSNR %.1f dB\n",
+              static_cast<long long>(moved), worst_psnr_db);
+  EXPECT_EQ(frames, outcome.result.ticks);
+  EXPECT_GT(moved, 10);
 }
 
 }  // namespace
