@@ -73,6 +73,28 @@ int observer_of(const tick_looks* looks, int previous) {
   return lowest;
 }
 
+// Adds an uncovered tick to the first cause that holds in it (uncovered_time's order).
+void count_uncovered(const tick_looks* looks, int pedestrian, uncovered_time& counts) {
+  bool off_her = false, other = false, background = false, lost = false;
+  if (looks != nullptr)
+    for (const auto& [camera, look] : *looks) {
+      if (!look->found)
+        lost = true;
+      else if (look->truth == pedestrian)
+        off_her = true;
+      else if (look->truth >= 0)
+        other = true;
+      else
+        background = true;
+    }
+  auto& cause = off_her      ? counts.off_her
+                : other      ? counts.other_person
+                : background ? counts.background
+                : lost       ? counts.lost
+                             : counts.no_camera;
+  cause += 1.0;
+}
+
 bool any_reaches(const config::scenario& scenario, const world::station& station,
                  const indexed_log& index, const target_sample& s) {
   for (const auto& camera : scenario.cameras) {
@@ -216,6 +238,8 @@ evaluation evaluate(const config::scenario& scenario, const world::station& stat
           }
           observer = now;
           last_observed = s->tick;
+        } else {
+          count_uncovered(looks, origin.pedestrian, m.uncovered);
         }
         if (looks && std::any_of(looks->begin(), looks->end(), [&](const auto& l) {
               return l.second->truth == origin.pedestrian && l.second->iou >= 0.5;
@@ -234,6 +258,9 @@ evaluation evaluate(const config::scenario& scenario, const world::station& stat
       m.coverage = static_cast<double>(observed) / present;
       m.coverage_iou50 = static_cast<double>(observed_iou50) / present;
       m.oracle_bound = static_cast<double>(reachable_ticks) / present;
+      for (auto* f : {&m.uncovered.off_her, &m.uncovered.other_person, &m.uncovered.background,
+                      &m.uncovered.lost, &m.uncovered.no_camera})
+        *f /= static_cast<double>(present);
     }
     if (m.oracle_bound > 0.0) m.coverage_of_oracle = m.coverage / m.oracle_bound;
     group_figures(index, m, start, end, tick_s);
@@ -272,6 +299,12 @@ nlohmann::json task_json(const task_metrics& m) {
       {"time_in_station_s", m.time_in_station_s},
       {"coverage", m.coverage},
       {"coverage_iou50", m.coverage_iou50},
+      {"uncovered",
+       {{"off_her", m.uncovered.off_her},
+        {"other_person", m.uncovered.other_person},
+        {"background", m.uncovered.background},
+        {"lost", m.uncovered.lost},
+        {"no_camera", m.uncovered.no_camera}}},
       {"correct_identity", optional_number(m.correct_identity)},
       {"oracle_bound", m.oracle_bound},
       {"coverage_of_oracle", optional_number(m.coverage_of_oracle)},
@@ -323,6 +356,16 @@ nlohmann::json metrics_json(const config::scenario& scenario, const evaluation& 
        mean_over(t, [](const auto& m) { return std::optional<double>(m.oracle_bound); })},
       {"mean_coverage_of_oracle", mean_over(t, [](const auto& m) { return m.coverage_of_oracle; })},
       {"mean_correct_identity", mean_over(t, [](const auto& m) { return m.correct_identity; })},
+      {"mean_uncovered_off_her",
+       mean_over(t, [](const auto& m) { return std::optional<double>(m.uncovered.off_her); })},
+      {"mean_uncovered_other_person",
+       mean_over(t, [](const auto& m) { return std::optional<double>(m.uncovered.other_person); })},
+      {"mean_uncovered_background",
+       mean_over(t, [](const auto& m) { return std::optional<double>(m.uncovered.background); })},
+      {"mean_uncovered_lost",
+       mean_over(t, [](const auto& m) { return std::optional<double>(m.uncovered.lost); })},
+      {"mean_uncovered_no_camera",
+       mean_over(t, [](const auto& m) { return std::optional<double>(m.uncovered.no_camera); })},
       {"handoffs", handoffs},
       {"identity_switches", switches},
       {"messages", messages},

@@ -41,6 +41,21 @@ struct recovery {
   std::optional<double> recovered_after_s;
 };
 
+/// Why she was not covered, as fractions of her time in the station (docs/metrics.md): in each
+/// uncovered tick the first of these that holds. With coverage they sum to 1.
+struct uncovered_time {
+  /// A member's box is labelled her but does not contain her (it sits on part of her).
+  double off_her = 0.0;
+  /// A member's box holds someone else.
+  double other_person = 0.0;
+  /// A member's box holds nobody: floor, wall, furniture.
+  double background = 0.0;
+  /// The group's members have lost the track.
+  double lost = 0.0;
+  /// No camera performs the task.
+  double no_camera = 0.0;
+};
+
 /// One task's figures (docs/metrics.md defines each).
 struct task_metrics {
   std::uint32_t task = 0;
@@ -53,6 +68,7 @@ struct task_metrics {
   double time_in_station_s = 0.0;
   double coverage = 0.0;
   double coverage_iou50 = 0.0;
+  uncovered_time uncovered;
   std::optional<double> correct_identity;
   double oracle_bound = 0.0;
   std::optional<double> coverage_of_oracle;

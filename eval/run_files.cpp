@@ -106,6 +106,15 @@ void print_metrics_table(std::ostream& out, const evaluation& result) {
                m.coverage_of_oracle ? percent(*m.coverage_of_oracle) : std::string("-"),
                m.correct_identity ? percent(*m.correct_identity) : std::string("-"),
                m.observation_handoffs, m.identity_switches, m.leader_changes, m.csp_invocations);
+  // Where the rest of her time went (docs/metrics.md, `uncovered`).
+  for (const auto& m : result.tasks) {
+    const auto& u = m.uncovered;
+    fmt::print(out,
+               "task {} not covered: {:.1f}% on someone else, {:.1f}% on background, {:.1f}% "
+               "lost, {:.1f}% with no camera, {:.1f}% beside her\n",
+               m.task, 100.0 * u.other_person, 100.0 * u.background, 100.0 * u.lost,
+               100.0 * u.no_camera, 100.0 * u.off_her);
+  }
 }
 
 }  // namespace argus::eval

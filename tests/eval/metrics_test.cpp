@@ -89,6 +89,10 @@ TEST_F(trace, every_metric_has_its_known_value) {
   EXPECT_NEAR(m.time_in_station_s, 10 * tick, 1e-9);
   EXPECT_NEAR(m.coverage, 0.7, 1e-9);        // ticks 1-4 and 8-10
   EXPECT_NEAR(m.coverage_iou50, 0.4, 1e-9);  // tick 1 and 8-10
+  // Ticks 5 and 6: camera 1 holds someone else; tick 7: camera 1 is down, camera 2 not yet in.
+  EXPECT_NEAR(m.uncovered.other_person, 0.2, 1e-9);
+  EXPECT_NEAR(m.uncovered.no_camera, 0.1, 1e-9);
+  EXPECT_EQ(m.uncovered.off_her + m.uncovered.background + m.uncovered.lost, 0.0);
   ASSERT_TRUE(m.correct_identity);
   EXPECT_NEAR(*m.correct_identity, 7.0 / 9.0, 1e-9);
   EXPECT_NEAR(m.oracle_bound, 1.0, 1e-9);
@@ -128,6 +132,22 @@ TEST_F(trace, a_cancelled_task_ends_at_the_cancellation) {
   EXPECT_TRUE(m.failure_recoveries.empty());
 }
 
+TEST_F(trace, each_uncovered_tick_goes_to_the_first_cause_that_holds_in_it) {
+  // Tick 5: camera 1's box on a part of her it does not contain; tick 6: on the floor; tick 7:
+  // camera 2 in the group but lost, camera 1 down.
+  log.frames[1][4] = frame(1, 5, {look(true, target, false, 0.1)});
+  log.frames[1][5] = frame(1, 6, {look(true, -1, false, 0.0)});
+  log.frames[2][6] = frame(2, 7, {look(false, -1, false, 0.0)});
+  // Tick 4: someone else beside her correct box still counts as covered.
+  log.frames[2][3] = frame(2, 4, {look(true, someone_else, false, 0.0)});
+  const auto m = evaluate(scenario, *station, log, events, 100).tasks.at(0);
+  EXPECT_NEAR(m.coverage, 0.7, 1e-9);
+  EXPECT_NEAR(m.uncovered.off_her, 0.1, 1e-9);
+  EXPECT_NEAR(m.uncovered.background, 0.1, 1e-9);
+  EXPECT_NEAR(m.uncovered.lost, 0.1, 1e-9);
+  EXPECT_EQ(m.uncovered.other_person + m.uncovered.no_camera, 0.0);
+}
+
 TEST_F(trace, the_json_names_every_figure_and_the_summary_averages_tasks) {
   const auto result = evaluate(scenario, *station, log, events, 100);
   const auto j = metrics_json(scenario, result, 2.0, 10.0);
@@ -139,8 +159,10 @@ TEST_F(trace, the_json_names_every_figure_and_the_summary_averages_tasks) {
   for (const auto* key :
        {"coverage", "coverage_iou50", "correct_identity", "oracle_bound", "coverage_of_oracle",
         "handoffs", "handoff_gaps_s", "identity_switches", "group_size", "leader_changes",
-        "messages_by_kind", "csp_invocations", "failure_recoveries"})
+        "messages_by_kind", "csp_invocations", "failure_recoveries", "uncovered"})
     EXPECT_TRUE(j["tasks"][0].contains(key)) << key;
+  EXPECT_NEAR(j["tasks"][0]["uncovered"]["other_person"].get<double>(), 0.2, 1e-9);
+  EXPECT_NEAR(j["summary"]["mean_uncovered_other_person"].get<double>(), 0.2, 1e-9);
 }
 
 }  // namespace
