@@ -38,7 +38,7 @@ struct recorded_camera {
   std::optional<vision::imaging_model> imaging;
   config::imaging_model imaging_settings;
   cv::Rect tile;
-  /// Its node missed its last turn: the tile shows the last view in grey.
+  /// Its node missed its last turn: the tile is marked failed, as in the key frames.
   bool down = false;
 };
 
@@ -73,23 +73,11 @@ void finish_tick(caf::stateful_actor<video_recorder_state>* self) {
   st.clock = nullptr;
 }
 
-// A crashed camera's tile: its last view in grey, with DOWN across the middle.
-void mark_down(cv::Mat& image) {
-  cv::Mat grey;
-  cv::cvtColor(image, grey, cv::COLOR_BGR2GRAY);
-  cv::cvtColor(grey / 2, image, cv::COLOR_GRAY2BGR);
-  const double scale = image.cols / 160.0;
-  int baseline = 0;
-  const auto size = cv::getTextSize("DOWN", cv::FONT_HERSHEY_SIMPLEX, scale, 2, &baseline);
-  cv::putText(image, "DOWN", {(image.cols - size.width) / 2, (image.rows + size.height) / 2},
-              cv::FONT_HERSHEY_SIMPLEX, scale, cv::Scalar(255, 255, 255), 2, cv::LINE_AA);
-}
-
 void tile_done(caf::stateful_actor<video_recorder_state>* self, std::size_t k, cv::Mat image) {
   auto& st = self->state;
   auto& camera = st.cameras[k];
   if (image.empty()) image = cv::Mat(camera.tile.size(), CV_8UC3, cv::Scalar(0, 0, 0));
-  if (camera.down) mark_down(image);
+  if (camera.down) vision::mark_failed_feed(image);
   vision::label_feed(image, camera.id);
   image.copyTo(st.mosaic(camera.tile));
   if (--st.pending == 0) finish_tick(self);

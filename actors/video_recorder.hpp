@@ -51,8 +51,8 @@ struct video_settings {
 /// mosaic frame, appends it to the video and only then acknowledges the tick: the video has
 /// exactly one frame per tick. A tick without a snapshot emits `video_out_of_step` and adds no
 /// frame; a frame the pool fails to render emits `video_render_failed` and shows black. A camera
-/// whose node did not take its turn in tick t - 1 (crashed) shows its last view in grey,
-/// marked DOWN.
+/// whose node did not take its turn in tick t - 1 (crashed) shows its view at its last pose,
+/// marked as the key frames mark a failed camera (vision::mark_failed_feed).
 ///
 /// The file is opened here, on the calling thread: throws std::runtime_error naming the file
 /// when it cannot be written.

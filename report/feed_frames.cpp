@@ -25,25 +25,13 @@ const config::camera_settings* camera_of(const config::scenario& scenario, int i
   return nullptr;
 }
 
-void draw_label(cv::Mat& image, const std::string& text, cv::Point at, const cv::Scalar& colour) {
-  const double scale = std::max(0.4, image.cols / 640.0);
-  int baseline = 0;
-  const auto size = cv::getTextSize(text, cv::FONT_HERSHEY_SIMPLEX, scale, 1, &baseline);
-  at.x = std::clamp(at.x, 0, std::max(0, image.cols - size.width - 4));
-  at.y = std::clamp(at.y, size.height + 4, std::max(size.height + 4, image.rows - baseline));
-  cv::rectangle(image, {at.x, at.y - size.height - 3}, {at.x + size.width + 4, at.y + baseline},
-                {20, 20, 20}, cv::FILLED);
-  cv::putText(image, text, {at.x + 2, at.y - 1}, cv::FONT_HERSHEY_SIMPLEX, scale, colour, 1,
-              cv::LINE_AA);
-}
-
 void draw_boxes(cv::Mat& image, const std::vector<track_box>& boxes) {
   int lost_row = 0;
   for (const auto& box : boxes) {
     const auto colour = box.observed ? observed_box_colour : unobserved_box_colour;
     if (!box.found) {
-      draw_label(image, fmt::format("task {} lost", box.task),
-                 {4, image.rows - 6 - 22 * lost_row++}, unobserved_box_colour);
+      vision::draw_feed_label(image, fmt::format("task {} lost", box.task),
+                              {4, image.rows - 6 - 22 * lost_row++}, unobserved_box_colour);
       continue;
     }
     const cv::Rect rect(cv::Point(static_cast<int>(box.x), static_cast<int>(box.y)),
@@ -51,24 +39,14 @@ void draw_boxes(cv::Mat& image, const std::vector<track_box>& boxes) {
                                  std::max(1, static_cast<int>(box.height))));
     // No anti-aliasing: the box keeps its pure colour.
     cv::rectangle(image, rect, colour, 2, cv::LINE_8);
-    draw_label(image, fmt::format("task {}", box.task), {rect.x, rect.y - 3}, colour);
+    vision::draw_feed_label(image, fmt::format("task {}", box.task), {rect.x, rect.y - 3}, colour);
   }
-}
-
-void mark_failed(cv::Mat& image) {
-  cv::Mat grey;
-  cv::cvtColor(image, grey, cv::COLOR_BGR2GRAY);
-  grey.convertTo(grey, -1, 0.6, 30.0);  // paler: a frame of the past
-  cv::cvtColor(grey, image, cv::COLOR_GRAY2BGR);
-  const cv::Scalar red(40, 40, 230);
-  cv::line(image, {0, 0}, {image.cols - 1, image.rows - 1}, red, 2, cv::LINE_AA);
-  cv::line(image, {image.cols - 1, 0}, {0, image.rows - 1}, red, 2, cv::LINE_AA);
-  draw_label(image, "FAILED", {image.cols / 2 - 30, image.rows / 2}, red);
 }
 
 cv::Mat missing_camera(int id) {
   cv::Mat image(240, 320, CV_8UC3, cv::Scalar(40, 40, 40));
-  draw_label(image, fmt::format("no camera {} in the scenario", id), {8, 120}, {255, 255, 255});
+  vision::draw_feed_label(image, fmt::format("no camera {} in the scenario", id), {8, 120},
+                          {255, 255, 255});
   return image;
 }
 
@@ -136,7 +114,7 @@ std::vector<std::vector<cv::Mat>> render_key_frames(
       image = model.interlaced()
                   ? model.apply(image, renderer.render(view, snapshot, time_s + tick_s / 2.0))
                   : model.apply(image);
-      if (frame.failed) mark_failed(image);
+      if (frame.failed) vision::mark_failed_feed(image);
       draw_boxes(image, tracks.at(frame.camera, tick));
       vision::label_feed(image, frame.camera);
       out[slot.event][slot.frame] = std::move(image);

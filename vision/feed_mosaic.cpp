@@ -47,4 +47,28 @@ void label_feed(cv::Mat& tile, int camera_id) {
               cv::LINE_AA);
 }
 
+void draw_feed_label(cv::Mat& image, const std::string& text, cv::Point at,
+                     const cv::Scalar& colour) {
+  const double scale = std::max(0.4, image.cols / 640.0);
+  int baseline = 0;
+  const auto size = cv::getTextSize(text, cv::FONT_HERSHEY_SIMPLEX, scale, 1, &baseline);
+  at.x = std::clamp(at.x, 0, std::max(0, image.cols - size.width - 4));
+  at.y = std::clamp(at.y, size.height + 4, std::max(size.height + 4, image.rows - baseline));
+  cv::rectangle(image, {at.x, at.y - size.height - 3}, {at.x + size.width + 4, at.y + baseline},
+                {20, 20, 20}, cv::FILLED);
+  cv::putText(image, text, {at.x + 2, at.y - 1}, cv::FONT_HERSHEY_SIMPLEX, scale, colour, 1,
+              cv::LINE_AA);
+}
+
+void mark_failed_feed(cv::Mat& image) {
+  cv::Mat grey;
+  cv::cvtColor(image, grey, cv::COLOR_BGR2GRAY);
+  grey.convertTo(grey, -1, 0.6, 30.0);  // paler: a frame of the past
+  cv::cvtColor(grey, image, cv::COLOR_GRAY2BGR);
+  const cv::Scalar red(40, 40, 230);
+  cv::line(image, {0, 0}, {image.cols - 1, image.rows - 1}, red, 2, cv::LINE_AA);
+  cv::line(image, {image.cols - 1, 0}, {0, image.rows - 1}, red, 2, cv::LINE_AA);
+  draw_feed_label(image, "FAILED", {image.cols / 2 - 30, image.rows / 2}, red);
+}
+
 }  // namespace argus::vision

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstddef>
+#include <string>
 
 #include "opencv2/core.hpp"
 
@@ -27,5 +28,13 @@ struct feed_mosaic_layout {
 /// Writes "C<id>" in the tile's top-left corner, white on a dark box, so a viewer can tell
 /// which camera a feed comes from.
 void label_feed(cv::Mat& tile, int camera_id);
+
+/// Writes `text` in `colour` on a dark box with its baseline at `at`, kept inside the image.
+void draw_feed_label(cv::Mat& image, const std::string& text, cv::Point at,
+                     const cv::Scalar& colour);
+
+/// A failed camera's frame: paler grey, crossed in red and labelled FAILED (the key frames of
+/// feeds/ and the run video draw a crashed camera alike).
+void mark_failed_feed(cv::Mat& image);
 
 }  // namespace argus::vision
