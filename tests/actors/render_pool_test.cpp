@@ -9,17 +9,15 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <map>
 #include <opencv2/core.hpp>
 #include <opencv2/videoio.hpp>
 #include <set>
-#include <sstream>
 
 #include "actors/run_scenario.hpp"
 #include "actors/system_config.hpp"
 #include "actors/type_ids.hpp"
 #include "config/scenario_loader.hpp"
+#include "report/camera_logs.hpp"
 #include "support/scene_checks.hpp"
 #include "vision/feed_mosaic.hpp"
 #include "vision/renderer.hpp"
@@ -191,31 +189,21 @@ TEST(render_pool, run_with_video_writes_one_frame_per_tick) {
   EXPECT_EQ(outcome.result.ticks, 30);
 }
 
-// poses.csv's rows by camera: from which world tick on the camera looked with which pose.
-std::map<int, std::map<std::int64_t, vision::ptz_state>> read_poses(
-    const std::filesystem::path& file) {
-  std::map<int, std::map<std::int64_t, vision::ptz_state>> out;
-  std::ifstream in(file);
-  std::string line;
-  std::getline(in, line);  // tick,t,camera,pan,tilt,fov,state
-  while (std::getline(in, line)) {
-    std::istringstream row(line);
-    std::string cell[7];
-    for (auto& c : cell) std::getline(row, c, ',');
-    out[std::stoi(cell[2])][std::stoll(cell[0])] = {std::stod(cell[3]), std::stod(cell[4]),
-                                                    std::stod(cell[5])};
-  }
-  return out;
-}
-
 TEST(render_pool, run_with_video_shows_each_camera_at_its_pose) {
   // Seed 5, the task from 0 s: camera 7 takes a pedestrian at 1.9 s and turns and zooms after
   // her; every tile of every frame must show its camera's view at the pose its node saw that
-  // tick with (poses.csv), not the default pose.
+  // tick with (poses.csv), not the default pose. Camera 1 is down from 1 s to 2 s: its tiles
+  // then are its last view marked failed, and after it its own view again.
   auto scenario = config::load_scenario(ARGUS_SOURCE_DIR "/scenarios/penn_station.yaml");
   scenario.run.seed = 5;
   scenario.run.duration = std::chrono::duration<double>{3.0};
   scenario.tasks.at(0).at = config::seconds{0.0};
+  config::fault crash;
+  crash.at = config::seconds{1.0};
+  crash.kind = config::fault_kind::crash_and_recover;
+  crash.length = config::seconds{1.0};
+  crash.camera = 1;
+  scenario.faults.push_back(crash);
   scenario.run.threads = 2;
   scenario.run.output_dir = std::filesystem::temp_directory_path() / "argus_video_pose_test";
   // Raw frames, so that a tile can be compared with a render of any one frame (a camera's
@@ -229,14 +217,14 @@ TEST(render_pool, run_with_video_shows_each_camera_at_its_pose) {
   const auto outcome = run_with_video(scenario);
   cv::VideoCapture video((outcome.output_dir / "video" / "feeds.avi").string());
   ASSERT_TRUE(video.isOpened());
-  const auto poses = read_poses(outcome.output_dir / "poses.csv");
+  const auto poses = report::pose_history::read(outcome.output_dir / "poses.csv");
 
   direct_scene scene(scenario);
   const auto& cameras = scene.cameras;
   auto& crowd = scene.crowd;
   auto& direct = scene.direct;
   const auto& layout = scene.layout;
-  std::int64_t frames = 0, moved = 0;
+  std::int64_t frames = 0, moved = 0, failed = 0;
   double worst_psnr_db = 1e9;
   cv::Mat image;
   while (video.read(image)) {
@@ -247,22 +235,31 @@ TEST(render_pool, run_with_video_shows_each_camera_at_its_pose) {
       vision::camera_view view{vision::camera_placement::from(cameras[k]),
                                vision::ptz_camera::from(cameras[k]).state(), 160, 120};
       const auto home = view.pose;
-      if (const auto it = poses.find(cameras[k].id); it != poses.end()) {
-        const auto row = it->second.upper_bound(static_cast<std::int64_t>(frame.tick()));
-        if (row != it->second.begin()) view.pose = std::prev(row)->second;
-      }
+      const auto tick = static_cast<std::int64_t>(frame.tick());
+      if (const auto* row = poses.at(cameras[k].id, tick))
+        view.pose = {row->pan_deg, row->tilt_deg, row->field_of_view_deg};
       if (!(view.pose == home)) ++moved;
       cv::Mat expected = direct.render(view, frame, frame.time().count());
+      // The recorder knows a node is down once it has missed a whole turn: a tick after the
+      // first one poses.csv marks down.
+      if (const auto* before = poses.at(cameras[k].id, tick - 1);
+          before && before->state == "down") {
+        vision::mark_failed_feed(expected);
+        ++failed;
+      }
       vision::label_feed(expected, cameras[k].id);
       const double psnr_db = cv::PSNR(image(layout.tile(k)), expected);
       worst_psnr_db = std::min(worst_psnr_db, psnr_db);
       EXPECT_GT(psnr_db, 25.0) << "frame " << frames << " camera " << cameras[k].id;
     }
   }
-  std::printf("[ video    ] %lld tiles of a moved camera; worst tile PSNR %.1f dB\n",
-              static_cast<long long>(moved), worst_psnr_db);
+  std::printf(
+      "[ video    ] %lld tiles of a moved camera, %lld of a failed one; worst tile PSNR "
+      "%.1f dB\n",
+      static_cast<long long>(moved), static_cast<long long>(failed), worst_psnr_db);
   EXPECT_EQ(frames, outcome.result.ticks);
   EXPECT_GT(moved, 10);
+  EXPECT_GT(failed, 10);
 }
 
 }  // namespace
