@@ -258,9 +258,8 @@ evaluation evaluate(const config::scenario& scenario, const world::station& stat
       m.coverage = static_cast<double>(observed) / present;
       m.coverage_iou50 = static_cast<double>(observed_iou50) / present;
       m.oracle_bound = static_cast<double>(reachable_ticks) / present;
-      for (auto* f : {&m.uncovered.off_her, &m.uncovered.other_person, &m.uncovered.background,
-                      &m.uncovered.lost, &m.uncovered.no_camera})
-        *f /= static_cast<double>(present);
+      for (const auto& [name, share] : uncovered_causes)
+        m.uncovered.*share /= static_cast<double>(present);
     }
     if (m.oracle_bound > 0.0) m.coverage_of_oracle = m.coverage / m.oracle_bound;
     group_figures(index, m, start, end, tick_s);
@@ -288,6 +287,9 @@ nlohmann::json task_json(const task_metrics& m) {
   for (const auto& [t, size] : m.group_size_series) series.push_back({t, size});
   std::uint64_t messages = 0;
   for (const auto& [kind, count] : m.messages_by_kind) messages += count;
+  nlohmann::json uncovered = nlohmann::json::object();
+  for (const auto& [name, share] : uncovered_causes)
+    uncovered[std::string(name)] = m.uncovered.*share;
   return {
       {"task", m.task},
       {"pedestrian", m.pedestrian},
@@ -299,12 +301,7 @@ nlohmann::json task_json(const task_metrics& m) {
       {"time_in_station_s", m.time_in_station_s},
       {"coverage", m.coverage},
       {"coverage_iou50", m.coverage_iou50},
-      {"uncovered",
-       {{"off_her", m.uncovered.off_her},
-        {"other_person", m.uncovered.other_person},
-        {"background", m.uncovered.background},
-        {"lost", m.uncovered.lost},
-        {"no_camera", m.uncovered.no_camera}}},
+      {"uncovered", uncovered},
       {"correct_identity", optional_number(m.correct_identity)},
       {"oracle_bound", m.oracle_bound},
       {"coverage_of_oracle", optional_number(m.coverage_of_oracle)},
@@ -356,22 +353,15 @@ nlohmann::json metrics_json(const config::scenario& scenario, const evaluation& 
        mean_over(t, [](const auto& m) { return std::optional<double>(m.oracle_bound); })},
       {"mean_coverage_of_oracle", mean_over(t, [](const auto& m) { return m.coverage_of_oracle; })},
       {"mean_correct_identity", mean_over(t, [](const auto& m) { return m.correct_identity; })},
-      {"mean_uncovered_off_her",
-       mean_over(t, [](const auto& m) { return std::optional<double>(m.uncovered.off_her); })},
-      {"mean_uncovered_other_person",
-       mean_over(t, [](const auto& m) { return std::optional<double>(m.uncovered.other_person); })},
-      {"mean_uncovered_background",
-       mean_over(t, [](const auto& m) { return std::optional<double>(m.uncovered.background); })},
-      {"mean_uncovered_lost",
-       mean_over(t, [](const auto& m) { return std::optional<double>(m.uncovered.lost); })},
-      {"mean_uncovered_no_camera",
-       mean_over(t, [](const auto& m) { return std::optional<double>(m.uncovered.no_camera); })},
       {"handoffs", handoffs},
       {"identity_switches", switches},
       {"messages", messages},
       {"wall_seconds", wall_seconds},
       {"speed_ratio", wall_seconds > 0.0 ? nlohmann::json(virtual_seconds / wall_seconds)
                                          : nlohmann::json(nullptr)}};
+  for (const auto& [name, share] : uncovered_causes)
+    summary["mean_uncovered_" + std::string(name)] =
+        mean_over(t, [share](const auto& m) { return std::optional<double>(m.uncovered.*share); });
   return {{"definitions", "docs/metrics.md"},
           {"scenario", scenario.name},
           {"seed", scenario.run.seed},

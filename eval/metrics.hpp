@@ -1,10 +1,12 @@
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <map>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -55,6 +57,14 @@ struct uncovered_time {
   /// No camera performs the task.
   double no_camera = 0.0;
 };
+
+/// The causes by their names in metrics.json, in uncovered_time's order.
+inline constexpr std::array<std::pair<std::string_view, double uncovered_time::*>, 5>
+    uncovered_causes{{{"off_her", &uncovered_time::off_her},
+                      {"other_person", &uncovered_time::other_person},
+                      {"background", &uncovered_time::background},
+                      {"lost", &uncovered_time::lost},
+                      {"no_camera", &uncovered_time::no_camera}}};
 
 /// One task's figures (docs/metrics.md defines each).
 struct task_metrics {
