@@ -59,7 +59,7 @@ def track_starts(run):
             had_box[key] = found
 
 
-def quartiles(values):
+def quantiles(values):
     if not values:
         return None
     v = sorted(values)
@@ -84,7 +84,7 @@ def main(argv):
         "starts": sum(counts.values()),
         "on_her": sum(n for (_, r, _), n in counts.items() if r == "right"),
         "she_absent": sum(n for (_, _, w), n in counts.items() if w == "absent"),
-        "score_quantiles_10_25_50_75_90": {k: quartiles(v) for k, v in scores.items()},
+        "score_quantiles_10_25_50_75_90": {k: quantiles(v) for k, v in scores.items()},
         "rows": rows,
     }
     if as_json:
