@@ -11,16 +11,22 @@
 #include "actors/tick_context.hpp"
 #include "actors/type_ids.hpp"
 #include "fmt/format.h"
+#include "world/appearance_writer.hpp"
 #include "world/trajectory_writer.hpp"
 
 namespace argus::actors {
 namespace {
 
+// trajectories.csv and, beside it, pedestrians.csv (who looks like what).
 struct trajectory_file {
   std::filesystem::path final_path;
   std::filesystem::path partial_path;
   std::ofstream out;
   std::optional<world::trajectory_writer> writer;
+  std::filesystem::path looks_final_path;
+  std::filesystem::path looks_partial_path;
+  std::ofstream looks_out;
+  std::optional<world::appearance_writer> looks;
 };
 
 struct coordinator_setup {
@@ -45,7 +51,8 @@ struct world_coordinator_state {
   std::uint64_t sent = 0;
 };
 
-// Opens `<path>.partial` and writes the initial snapshot; throws when it cannot be written.
+// Opens `<path>.partial` (and pedestrians.csv.partial beside it); throws when either cannot be
+// written.
 std::shared_ptr<trajectory_file> open_trajectories(const std::filesystem::path& path) {
   if (path.empty()) return nullptr;
   auto file = std::make_shared<trajectory_file>();
@@ -57,19 +64,30 @@ std::shared_ptr<trajectory_file> open_trajectories(const std::filesystem::path& 
   file->out.open(file->partial_path, std::ios::binary | std::ios::trunc);
   if (!file->out) throw std::runtime_error("cannot write " + file->partial_path.string());
   file->writer.emplace(file->out);
+  file->looks_final_path = path.parent_path() / "pedestrians.csv";
+  file->looks_partial_path = file->looks_final_path;
+  file->looks_partial_path += ".partial";
+  file->looks_out.open(file->looks_partial_path, std::ios::binary | std::ios::trunc);
+  if (!file->looks_out)
+    throw std::runtime_error("cannot write " + file->looks_partial_path.string());
+  file->looks.emplace(file->looks_out);
   return file;
 }
 
-// Appends `frame`; after the run's last snapshot the file gets its final name.
+// Appends `frame`; after the run's last snapshot the files get their final names.
 void write_trajectories(std::shared_ptr<trajectory_file>& file, const world::snapshot& frame,
                         std::int64_t end_tick) {
   if (!file) return;
   file->writer->write(frame);
+  file->looks->write(frame);
   if (static_cast<std::int64_t>(frame.tick()) < end_tick) return;
   file->writer.reset();
   file->out.close();
+  file->looks.reset();
+  file->looks_out.close();
   std::error_code ignored;
   std::filesystem::rename(file->partial_path, file->final_path, ignored);
+  std::filesystem::rename(file->looks_partial_path, file->looks_final_path, ignored);
   file.reset();
 }
 

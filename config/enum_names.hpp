@@ -126,6 +126,15 @@ struct enum_names<task_target> {
   }};
 };
 
+/// Names for the world's `clothing`.
+template <>
+struct enum_names<clothing> {
+  static constexpr std::array<enum_entry<clothing>, 2> entries{{
+      {clothing::palette, "palette"},
+      {clothing::varied, "varied"},
+  }};
+};
+
 /// Names for the controller's `strategy`.
 template <>
 struct enum_names<control_strategy> {

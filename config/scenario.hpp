@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "config/clothing.hpp"
+
 namespace argus::config {
 
 /// Durations in scenarios are virtual time in (fractional) seconds; YAML writes them with a
@@ -82,6 +84,8 @@ struct world_settings {
   unsigned partitions = 1;
   /// Where preferred speeds come from.
   speed_settings speed;
+  /// How their clothes are coloured.
+  clothing clothes = clothing::palette;
   /// Streams of pedestrians walking to an exit (standard experiments).
   std::vector<flow_settings> flows;
   /// Areas where density, speed and flow are measured.

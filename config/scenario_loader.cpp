@@ -31,9 +31,9 @@ constexpr std::array<std::string_view, 7> sensing_keys{"mode",
                                                        "local_search_frames"};
 constexpr std::array<std::string_view, 6> run_keys{"seed",  "duration", "tick",
                                                    "speed", "threads",  "output_dir"};
-constexpr std::array<std::string_view, 7> world_keys{
-    "layout", "population", "spawn_rate_per_min", "partitions",
-    "speed",  "flows",      "measurement_areas"};
+constexpr std::array<std::string_view, 8> world_keys{
+    "layout",   "population", "spawn_rate_per_min", "partitions", "speed",
+    "clothing", "flows",      "measurement_areas"};
 constexpr std::array<std::string_view, 4> speed_keys{"mean_mps", "sd_mps", "min_mps", "max_mps"};
 constexpr std::array<std::string_view, 7> flow_keys{"name",       "min",   "max", "count",
                                                     "rate_per_s", "start", "exit"};
@@ -149,6 +149,7 @@ class scenario_parser {
     world.read("population", out.population, value_bounds::closed(0, 1'000'000));
     world.read("spawn_rate_per_min", out.spawn_rate_per_min, non_negative);
     world.read("partitions", out.partitions, value_bounds::at_least(1));
+    world.read("clothing", out.clothes);
     if (const auto node = world.find("speed")) {
       mapping_reader speed(reader_, *node, "world.speed", speed_keys);
       speed.read("mean_mps", out.speed.mean_mps, value_bounds::closed(0.1, 3.0));

@@ -186,6 +186,7 @@ std::string to_yaml(const scenario& s) {
             fmt::format("{{mean_mps: {}, sd_mps: {}, min_mps: {}, max_mps: {}}}",
                         number(s.world.speed.mean_mps), number(s.world.speed.sd_mps),
                         number(s.world.speed.min_mps), number(s.world.speed.max_mps)));
+  out.entry(1, "clothing", yaml_name(s.world.clothes));
   auto box_text = [](const plan_box& b) {
     return fmt::format("min: [{}, {}], max: [{}, {}]", number(b.min_x_m), number(b.min_y_m),
                        number(b.max_x_m), number(b.max_y_m));

@@ -115,6 +115,32 @@ constexpr std::array<rgb8, 6> skins{{{255, 220, 190},
 constexpr std::array<rgb8, 6> hairs{
     {{20, 15, 10}, {60, 40, 25}, {110, 75, 40}, {200, 170, 110}, {150, 60, 30}, {170, 170, 170}}};
 
+// Hue in degrees, saturation and value in [0, 1].
+rgb8 from_hsv(double hue_deg, double saturation, double value) {
+  const double c = value * saturation;
+  const double h = std::fmod(hue_deg, 360.0) / 60.0;
+  const double x = c * (1.0 - std::abs(std::fmod(h, 2.0) - 1.0));
+  double r = 0.0, g = 0.0, b = 0.0;
+  if (h < 1.0) {
+    r = c, g = x;
+  } else if (h < 2.0) {
+    r = x, g = c;
+  } else if (h < 3.0) {
+    g = c, b = x;
+  } else if (h < 4.0) {
+    g = x, b = c;
+  } else if (h < 5.0) {
+    r = x, b = c;
+  } else {
+    r = c, b = x;
+  }
+  const double m = value - c;
+  auto byte = [m](double v) {
+    return static_cast<std::uint8_t>(std::lround(std::clamp(v + m, 0.0, 1.0) * 255.0));
+  };
+  return {byte(r), byte(g), byte(b)};
+}
+
 template <class T, std::size_t N>
 T pick(rng& random, const std::array<T, N>& from) {
   return from[random.below(static_cast<std::uint32_t>(N))];
@@ -122,10 +148,18 @@ T pick(rng& random, const std::array<T, N>& from) {
 
 }  // namespace
 
-appearance draw_appearance(rng& random) {
+appearance draw_appearance(rng& random, config::clothing clothes) {
   appearance look;
-  look.shirt = pick(random, shirts);
-  look.trousers = pick(random, trousers);
+  if (clothes == config::clothing::varied) {
+    // Shirts bright or dark, plain or vivid; trousers mostly muted and darker, as people dress.
+    look.shirt =
+        from_hsv(random.uniform(0.0, 360.0), random.uniform(0.15, 0.9), random.uniform(0.25, 0.95));
+    look.trousers =
+        from_hsv(random.uniform(0.0, 360.0), random.uniform(0.05, 0.6), random.uniform(0.1, 0.75));
+  } else {
+    look.shirt = pick(random, shirts);
+    look.trousers = pick(random, trousers);
+  }
   look.skin = pick(random, skins);
   look.hair = pick(random, hairs);
   look.height_m = random.uniform(1.52, 1.95);
@@ -140,13 +174,13 @@ constexpr std::uint64_t speed_stream = 0x7370656564737472ULL;  // "speedstr"
 
 /// Seeds `p`'s generator, draws its looks, speed and heading.
 pedestrian make_body(int id, std::uint64_t run_seed, const vec2& position,
-                     const speed_distribution& speeds) {
+                     const speed_distribution& speeds, config::clothing clothes) {
   pedestrian p;
   p.random = rng(config::derive_seed(config::derive_seed(run_seed, pedestrian_stream),
                                      static_cast<std::uint64_t>(id)));
   p.state.id = id;
   p.state.position = position;
-  p.state.look = draw_appearance(p.random);
+  p.state.look = draw_appearance(p.random, clothes);
   rng speed_random(config::derive_seed(config::derive_seed(run_seed, speed_stream),
                                        static_cast<std::uint64_t>(id)));
   p.preferred_speed_mps = speeds.draw(speed_random);
@@ -157,8 +191,9 @@ pedestrian make_body(int id, std::uint64_t run_seed, const vec2& position,
 }  // namespace
 
 pedestrian make_pedestrian(int id, std::uint64_t run_seed, const vec2& position, int entry_portal,
-                           int entry_stairs, const speed_distribution& speeds) {
-  pedestrian p = make_body(id, run_seed, position, speeds);
+                           int entry_stairs, const speed_distribution& speeds,
+                           config::clothing clothes) {
+  pedestrian p = make_body(id, run_seed, position, speeds, clothes);
   p.entry_portal = entry_portal;
   p.entry_stairs = entry_stairs;
   // The agenda: errands in the station, then the platform or the street.
@@ -187,8 +222,9 @@ pedestrian make_pedestrian(int id, std::uint64_t run_seed, const vec2& position,
 }
 
 pedestrian make_flow_pedestrian(int id, std::uint64_t run_seed, const vec2& position,
-                                int exit_portal, const speed_distribution& speeds) {
-  pedestrian p = make_body(id, run_seed, position, speeds);
+                                int exit_portal, const speed_distribution& speeds,
+                                config::clothing clothes) {
+  pedestrian p = make_body(id, run_seed, position, speeds, clothes);
   p.flow_exit = exit_portal;
   p.agenda[p.agenda_size++] = goal_kind::leave_station;
   p.state.goal = p.agenda[0];

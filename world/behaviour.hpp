@@ -76,12 +76,14 @@ struct behaviour_settings {
 /// `entry_stairs` the stairs it came up (an arriving passenger), each -1 when not. Its first
 /// goal begins at its first step.
 pedestrian make_pedestrian(int id, std::uint64_t run_seed, const vec2& position, int entry_portal,
-                           int entry_stairs, const speed_distribution& speeds = {});
+                           int entry_stairs, const speed_distribution& speeds = {},
+                           config::clothing clothes = config::clothing::palette);
 
 /// Creates a flow pedestrian (world/flow.hpp): appearance and speed as make_pedestrian, and
 /// one goal, leaving by portal `exit_portal`.
 pedestrian make_flow_pedestrian(int id, std::uint64_t run_seed, const vec2& position,
-                                int exit_portal, const speed_distribution& speeds = {});
+                                int exit_portal, const speed_distribution& speeds = {},
+                                config::clothing clothes = config::clothing::palette);
 
 /// One tick of one pedestrian, phase one of the two-phase step: decides (behaviour state
 /// machine) and moves (social force plus non-penetration constraints) using only `previous`

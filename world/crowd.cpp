@@ -18,6 +18,7 @@ crowd_settings crowd_settings::from(const config::scenario& scenario) {
   out.behaviour.tick_s = scenario.run.tick.count();
   const auto& speed = scenario.world.speed;
   out.speeds = {speed.mean_mps, speed.sd_mps, speed.min_mps, speed.max_mps};
+  out.clothes = scenario.world.clothes;
   for (const auto& f : scenario.world.flows) {
     flow each;
     each.name = f.name;
@@ -33,7 +34,8 @@ crowd_settings crowd_settings::from(const config::scenario& scenario) {
 }
 
 spawner_settings crowd_settings::spawning(const station& where) const {
-  spawner_settings out{run_seed, population, spawn_rate_per_min, behaviour.tick_s, speeds, flows};
+  spawner_settings out{run_seed, population, spawn_rate_per_min, behaviour.tick_s, speeds,
+                       clothes,  flows};
   std::vector<config::problem> problems;
   const auto& portals = where.plan().portals;
   for (std::size_t i = 0; i < out.flows.size(); ++i) {

@@ -26,6 +26,8 @@ struct crowd_settings {
   behaviour_settings behaviour;
   /// Where preferred speeds come from.
   speed_distribution speeds;
+  /// How clothes are coloured.
+  config::clothing clothes = config::clothing::palette;
   /// Streams of pedestrians to an exit (standard experiments).
   std::vector<flow> flows;
   /// The scenario file the flows came from, for problems.

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <string_view>
 
+#include "config/clothing.hpp"
 #include "world/layout.hpp"
 #include "world/rng.hpp"
 
@@ -71,8 +72,9 @@ struct appearance {
   friend bool operator==(const appearance&, const appearance&) = default;
 };
 
-/// Draws an appearance from the palettes.
-appearance draw_appearance(rng& random);
+/// Draws an appearance: from the palettes, or with `varied` clothes of random colours (skin and
+/// hair from their palettes either way).
+appearance draw_appearance(rng& random, config::clothing clothes = config::clothing::palette);
 
 /// The public, per-tick state of one pedestrian: ground truth (id, position, velocity,
 /// heading, activity, body) plus what others need to coordinate deterministically (which

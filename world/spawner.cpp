@@ -62,7 +62,8 @@ std::vector<pedestrian> spawner::populate(const station& where, std::uint64_t ti
     const box& b =
         floors[static_cast<std::size_t>(std::min<std::ptrdiff_t>(which, floors.size() - 1))]->area;
     const vec2 p{random_.uniform(b.min.x(), b.max.x()), random_.uniform(b.min.y(), b.max.y())};
-    auto candidate = make_pedestrian(next_id_, settings_.run_seed, p, -1, -1, settings_.speeds);
+    auto candidate = make_pedestrian(next_id_, settings_.run_seed, p, -1, -1, settings_.speeds,
+                                     settings_.clothes);
     const double radius = candidate.state.radius_m();
     bool ok = where.fits(p, radius);
     const int cx = std::clamp(static_cast<int>(p.x() / cell), 0, w - 1);
@@ -113,7 +114,7 @@ bool spawner::place(const station& where, std::span<const pedestrian_state> pres
   const vec2 p{random_.uniform(area.min.x(), area.max.x()),
                random_.uniform(area.min.y(), area.max.y())};
   auto candidate = make_pedestrian(next_id_, settings_.run_seed, p, door >= 0 ? door : -1,
-                                   door < 0 ? -1 - door : -1, settings_.speeds);
+                                   door < 0 ? -1 - door : -1, settings_.speeds, settings_.clothes);
   if (!where.fits(p, candidate.state.radius_m()) ||
       !clear_of(p, candidate.state.radius_m(), present, fresh)) {
     return false;
@@ -142,8 +143,8 @@ std::vector<pedestrian> spawner::spawn(const station& where,
       const box& area = f.spawn_area;
       const vec2 p{random_.uniform(area.min.x(), area.max.x()),
                    random_.uniform(area.min.y(), area.max.y())};
-      auto candidate =
-          make_flow_pedestrian(next_id_, settings_.run_seed, p, f.exit_portal, settings_.speeds);
+      auto candidate = make_flow_pedestrian(next_id_, settings_.run_seed, p, f.exit_portal,
+                                            settings_.speeds, settings_.clothes);
       if (!where.fits(p, candidate.state.radius_m()) ||
           !clear_of(p, candidate.state.radius_m(), present, out)) {
         continue;

@@ -24,6 +24,8 @@ struct spawner_settings {
   double tick_s = 1.0 / 15.0;
   /// Where everyone's preferred speed comes from.
   speed_distribution speeds;
+  /// How their clothes are coloured.
+  config::clothing clothes = config::clothing::palette;
   /// Streams of pedestrians for standard experiments, spawned besides the population.
   std::vector<flow> flows;
 };

@@ -140,6 +140,24 @@ TEST(run_scenario, runs_the_script_crashes_and_recovers_cameras_and_writes_outpu
     EXPECT_EQ(listed, ids) << "tick " << tick << ": " << listed.size() << " rows for " << ids.size()
                            << " pedestrians";
   }
+  // Who looks like what: every pedestrian of the trajectories once, at the tick first listed.
+  ASSERT_TRUE(std::filesystem::exists(dir / "pedestrians.csv"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "pedestrians.csv.partial"));
+  std::map<int, std::int64_t> first_listed;
+  for (const auto& [tick, ids] : rows)
+    for (int id : ids) first_listed.emplace(id, tick);
+  std::map<int, std::int64_t> first_written;
+  std::ifstream looks(dir / "pedestrians.csv");
+  std::string look;
+  std::getline(looks, look);  // header
+  while (std::getline(looks, look)) {
+    std::istringstream fields(look);
+    std::string id, tick;
+    std::getline(fields, id, ',');
+    std::getline(fields, tick, ',');
+    EXPECT_TRUE(first_written.emplace(std::stoi(id), std::stoll(tick)).second) << look;
+  }
+  EXPECT_EQ(first_written, first_listed);
   EXPECT_EQ(summary["network"]["links"], 3);
   EXPECT_GT(summary["network"]["totals"]["delivered"].get<int>(), 0);
   EXPECT_EQ(summary["network"]["invariant_holds"], true);

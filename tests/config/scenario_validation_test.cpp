@@ -60,7 +60,7 @@ TEST(scenario_validation, unknown_key_without_a_close_match_gets_no_suggestion) 
   EXPECT_EQ(only_problem("world: {colour: red}\n"),
             (problem{"bad.yaml", 1, 9, "world.colour",
                      "unknown key 'colour' (expected one of: layout, population, "
-                     "spawn_rate_per_min, partitions, speed, flows, measurement_areas)"}));
+                     "spawn_rate_per_min, partitions, speed, clothing, flows, measurement_areas)"}));
 }
 
 TEST(scenario_validation, unknown_top_level_key) {

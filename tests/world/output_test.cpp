@@ -1,14 +1,18 @@
-// Output helpers: the trajectories CSV and the plan-view PNG (Fig. 1 look-alike).
+// Output helpers: the trajectories and appearances CSVs and the plan-view PNG (Fig. 1
+// look-alike).
 #include <gtest/gtest.h>
 
 #include <cstdlib>
 #include <filesystem>
+#include <map>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
+#include <set>
 #include <sstream>
 #include <string>
 
 #include "config/scenario_loader.hpp"
+#include "world/appearance_writer.hpp"
 #include "world/crowd.hpp"
 #include "world/layout_loader.hpp"
 #include "world/plan_view.hpp"
@@ -42,6 +46,51 @@ TEST(trajectory_writer, writes_header_and_one_row_per_pedestrian) {
     EXPECT_EQ(line.rfind("1,0.06666666666666667,", 0), 0u) << line;
   }
   EXPECT_EQ(rows, static_cast<int>(world.current()->pedestrians().size()));
+}
+
+TEST(appearance_writer, writes_each_pedestrian_once_with_the_colours_it_is_drawn_in) {
+  auto where = station::load(builtin_layout_path());
+  crowd_settings settings;
+  settings.population = 20;
+  settings.prefill = false;             // they arrive one by one...
+  settings.spawn_rate_per_min = 600.0;  // ...within a few ticks of each other
+  crowd world(where, settings);
+  std::ostringstream csv;
+  appearance_writer writer(csv);
+  std::map<int, appearance> seen;
+  std::map<int, std::uint64_t> arrived;
+  for (int k = 0; k < 45; ++k) {
+    world.step();
+    writer.write(*world.current());
+    for (const auto& p : world.current()->pedestrians()) {
+      seen.emplace(p.id, p.look);
+      arrived.emplace(p.id, world.current()->tick());
+    }
+  }
+  ASSERT_GT(seen.size(), 5u);
+  std::set<std::uint64_t> arrival_ticks;
+  for (const auto& [id, tick] : arrived) arrival_ticks.insert(tick);
+  ASSERT_GT(arrival_ticks.size(), 1u);
+  std::istringstream lines(csv.str());
+  std::string line;
+  std::getline(lines, line);
+  EXPECT_EQ(line, "id,first_tick,shirt,trousers,skin,hair,height_m,girth_m");
+  std::set<int> ids;
+  while (std::getline(lines, line)) {
+    std::istringstream row(line);
+    std::string id, tick, shirt;
+    std::getline(row, id, ',');
+    std::getline(row, tick, ',');
+    std::getline(row, shirt, ',');
+    ASSERT_TRUE(ids.insert(std::stoi(id)).second) << "written twice: " << line;
+    ASSERT_EQ(seen.count(std::stoi(id)), 1u) << line;
+    EXPECT_EQ(std::stoull(tick), arrived.at(std::stoi(id))) << line;
+    const auto& c = seen.at(std::stoi(id)).shirt;
+    char hex[8];
+    std::snprintf(hex, sizeof hex, "#%02x%02x%02x", c.r, c.g, c.b);
+    EXPECT_EQ(shirt, hex) << line;
+  }
+  EXPECT_EQ(ids.size(), seen.size());
 }
 
 TEST(trail_recorder, keeps_only_the_trail_length) {
