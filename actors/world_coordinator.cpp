@@ -17,16 +17,35 @@
 namespace argus::actors {
 namespace {
 
-// trajectories.csv and, beside it, pedestrians.csv (who looks like what).
-struct trajectory_file {
+// A file written as `<path>.partial` and given its name once complete, so that an interrupted
+// run leaves nothing that looks whole.
+struct partial_file {
   std::filesystem::path final_path;
   std::filesystem::path partial_path;
   std::ofstream out;
-  std::optional<world::trajectory_writer> writer;
-  std::filesystem::path looks_final_path;
-  std::filesystem::path looks_partial_path;
-  std::ofstream looks_out;
-  std::optional<world::appearance_writer> looks;
+
+  // Throws when it cannot be written.
+  explicit partial_file(const std::filesystem::path& path) : final_path(path), partial_path(path) {
+    partial_path += ".partial";
+    out.open(partial_path, std::ios::binary | std::ios::trunc);
+    if (!out) throw std::runtime_error("cannot write " + partial_path.string());
+  }
+  void finish() {
+    out.close();
+    std::error_code ignored;
+    std::filesystem::rename(partial_path, final_path, ignored);
+  }
+};
+
+// trajectories.csv and, beside it, pedestrians.csv (who looks like what).
+struct trajectory_file {
+  partial_file rows;
+  partial_file looks;
+  world::trajectory_writer row_writer{rows.out};
+  world::appearance_writer look_writer{looks.out};
+
+  explicit trajectory_file(const std::filesystem::path& path)
+      : rows(path), looks(path.parent_path() / "pedestrians.csv") {}
 };
 
 struct coordinator_setup {
@@ -51,43 +70,24 @@ struct world_coordinator_state {
   std::uint64_t sent = 0;
 };
 
-// Opens `<path>.partial` (and pedestrians.csv.partial beside it); throws when either cannot be
+// Opens `<path>.partial` and pedestrians.csv.partial beside it; throws when either cannot be
 // written.
 std::shared_ptr<trajectory_file> open_trajectories(const std::filesystem::path& path) {
   if (path.empty()) return nullptr;
-  auto file = std::make_shared<trajectory_file>();
-  file->final_path = path;
-  file->partial_path = path;
-  file->partial_path += ".partial";
   std::error_code ignored;
   if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path(), ignored);
-  file->out.open(file->partial_path, std::ios::binary | std::ios::trunc);
-  if (!file->out) throw std::runtime_error("cannot write " + file->partial_path.string());
-  file->writer.emplace(file->out);
-  file->looks_final_path = path.parent_path() / "pedestrians.csv";
-  file->looks_partial_path = file->looks_final_path;
-  file->looks_partial_path += ".partial";
-  file->looks_out.open(file->looks_partial_path, std::ios::binary | std::ios::trunc);
-  if (!file->looks_out)
-    throw std::runtime_error("cannot write " + file->looks_partial_path.string());
-  file->looks.emplace(file->looks_out);
-  return file;
+  return std::make_shared<trajectory_file>(path);
 }
 
 // Appends `frame`; after the run's last snapshot the files get their final names.
 void write_trajectories(std::shared_ptr<trajectory_file>& file, const world::snapshot& frame,
                         std::int64_t end_tick) {
   if (!file) return;
-  file->writer->write(frame);
-  file->looks->write(frame);
+  file->row_writer.write(frame);
+  file->look_writer.write(frame);
   if (static_cast<std::int64_t>(frame.tick()) < end_tick) return;
-  file->writer.reset();
-  file->out.close();
-  file->looks.reset();
-  file->looks_out.close();
-  std::error_code ignored;
-  std::filesystem::rename(file->partial_path, file->final_path, ignored);
-  std::filesystem::rename(file->looks_partial_path, file->looks_final_path, ignored);
+  file->rows.finish();
+  file->looks.finish();
   file.reset();
 }
 

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <iterator>
 #include <string>
 
@@ -22,13 +23,16 @@ appearance_writer::appearance_writer(std::ostream& out) : out_(out) {
 
 void appearance_writer::write(const snapshot& frame) {
   std::string buffer;
+  int last = last_written_;
   for (const auto& p : frame.pedestrians()) {
-    if (!written_.insert(p.id).second) continue;
+    if (p.id <= last_written_) continue;
+    last = std::max(last, p.id);
     const auto& look = p.look;
     fmt::format_to(std::back_inserter(buffer), "{},{},{},{},{},{},{},{}\n", p.id, frame.tick(),
                    hex(look.shirt), hex(look.trousers), hex(look.skin), hex(look.hair),
                    look.height_m, look.girth_m);
   }
+  last_written_ = last;
   out_ << buffer;
 }
 

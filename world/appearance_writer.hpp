@@ -1,7 +1,6 @@
 #pragma once
 
 #include <ostream>
-#include <set>
 
 namespace argus::world {
 
@@ -21,7 +20,8 @@ class appearance_writer {
 
  private:
   std::ostream& out_;
-  std::set<int> written_;
+  // The spawner numbers pedestrians 1, 2, 3, ... and never reuses an id: one above this is new.
+  int last_written_ = 0;
 };
 
 }  // namespace argus::world

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "config/derive_seed.hpp"
+#include "opencv2/imgproc.hpp"
 #include "world/snapshot.hpp"
 #include "world/station.hpp"
 
@@ -117,28 +118,15 @@ constexpr std::array<rgb8, 6> hairs{
 
 // Hue in degrees, saturation and value in [0, 1].
 rgb8 from_hsv(double hue_deg, double saturation, double value) {
-  const double c = value * saturation;
-  const double h = std::fmod(hue_deg, 360.0) / 60.0;
-  const double x = c * (1.0 - std::abs(std::fmod(h, 2.0) - 1.0));
-  double r = 0.0, g = 0.0, b = 0.0;
-  if (h < 1.0) {
-    r = c, g = x;
-  } else if (h < 2.0) {
-    r = x, g = c;
-  } else if (h < 3.0) {
-    g = c, b = x;
-  } else if (h < 4.0) {
-    g = x, b = c;
-  } else if (h < 5.0) {
-    r = x, b = c;
-  } else {
-    r = c, b = x;
-  }
-  const double m = value - c;
-  auto byte = [m](double v) {
-    return static_cast<std::uint8_t>(std::lround(std::clamp(v + m, 0.0, 1.0) * 255.0));
+  cv::Mat3f colour(1, 1,
+                   cv::Vec3f(static_cast<float>(hue_deg), static_cast<float>(saturation),
+                             static_cast<float>(value)));
+  cv::cvtColor(colour, colour, cv::COLOR_HSV2RGB);
+  const auto rgb = colour(0, 0);
+  auto byte = [](float v) {
+    return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
   };
-  return {byte(r), byte(g), byte(b)};
+  return {byte(rgb[0]), byte(rgb[1]), byte(rgb[2])};
 }
 
 template <class T, std::size_t N>

@@ -105,6 +105,7 @@ TEST(scenario_loader, reads_every_field_of_a_full_scenario) {
   EXPECT_EQ(loaded.world.population, 250u);
   EXPECT_EQ(loaded.world.spawn_rate_per_min, 45.0);
   EXPECT_EQ(loaded.world.partitions, 4u);
+  EXPECT_EQ(loaded.world.clothes, clothing::varied);
 
   ASSERT_EQ(loaded.cameras.size(), 3u);
   const auto& first = loaded.cameras[0];

@@ -57,10 +57,11 @@ TEST(scenario_validation, unknown_key_suggests_the_closest_known_key) {
 }
 
 TEST(scenario_validation, unknown_key_without_a_close_match_gets_no_suggestion) {
-  EXPECT_EQ(only_problem("world: {colour: red}\n"),
-            (problem{"bad.yaml", 1, 9, "world.colour",
-                     "unknown key 'colour' (expected one of: layout, population, "
-                     "spawn_rate_per_min, partitions, speed, clothing, flows, measurement_areas)"}));
+  EXPECT_EQ(
+      only_problem("world: {colour: red}\n"),
+      (problem{"bad.yaml", 1, 9, "world.colour",
+               "unknown key 'colour' (expected one of: layout, population, "
+               "spawn_rate_per_min, partitions, speed, clothing, flows, measurement_areas)"}));
 }
 
 TEST(scenario_validation, unknown_top_level_key) {
@@ -114,6 +115,9 @@ TEST(scenario_validation, bad_enum_names_the_choices) {
                      "expected one of: best_solv, all_solv, bound_solv, got 'best_solve'; "
                      "did you mean "
                      "'best_solv'?"}));
+  EXPECT_EQ(only_problem("world: {clothing: plain}\n"),
+            (problem{"bad.yaml", 1, 19, "world.clothing",
+                     "expected one of: palette, varied, got 'plain'"}));
   EXPECT_EQ(only_problem("network: {unicast: reverse}\n"),
             (problem{"bad.yaml", 1, 20, "network.unicast",
                      "expected one of: flood, reverse_path, got 'reverse'"}));
