@@ -29,14 +29,20 @@ argus_install_missing() {
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends "${missing[@]}"
 }
 
-# argus_build DIR [cmake options...]: configures DIR on first use, then builds incrementally.
+# argus_build DIR [--target T] [cmake options...]: configures DIR on first use, then builds
+# incrementally (everything, or target T and what it needs).
 argus_build() {
   local dir="$1"
   shift
+  local target=()
+  if [ "${1:-}" = "--target" ]; then
+    target=(--target "$2")
+    shift 2
+  fi
   if [ ! -f "$dir/build.ninja" ]; then
     cmake -S "$ARGUS_ROOT" -B "$dir" -G Ninja -DCMAKE_CXX_COMPILER_LAUNCHER=ccache "$@"
   fi
-  cmake --build "$dir" --parallel "$(nproc)" && return 0
+  cmake --build "$dir" --parallel "$(nproc)" "${target[@]}" && return 0
   # A compile once failed in CI with no diagnostic at all (a killed compiler or a full disk
   # leaves none); the state of the machine is printed, and the build is tried once more
   # without ccache: an error in the code fails again, with its message.
@@ -44,7 +50,7 @@ argus_build() {
   df -h "$dir" >&2 || true
   free -m >&2 || true
   echo "argus: building $dir once more, without ccache" >&2
-  CCACHE_DISABLE=1 cmake --build "$dir" --parallel "$(nproc)"
+  CCACHE_DISABLE=1 cmake --build "$dir" --parallel "$(nproc)" "${target[@]}"
 }
 
 argus_install_missing
