@@ -235,6 +235,11 @@ struct sensing_settings {
   /// (vision::tracker_settings::local_search_frames); 0, the default, is the paper's tracker,
   /// which looks in the whole frame at once.
   int local_search_frames = 0;
+  /// Pixel sensing: a box whose colours match the ring around it more than this is taken for
+  /// background and not accepted (vision::surround_match(),
+  /// vision::tracker_settings::max_surround_match); 1, the default, is the paper's tracker,
+  /// which has no such test.
+  double max_surround_match = 1.0;
   friend bool operator==(const sensing_settings&, const sensing_settings&) = default;
 };
 
@@ -274,6 +279,15 @@ struct controller_settings {
   seconds auction_interval{3.0};
   /// A node asked for its relevance looks for the target in its view for this long.
   seconds relevance_look_time{0.5};
+  /// A node that found the target keeps looking at it for this long before it bids, and bids
+  /// only if she was found in at least `bid_min_found_fraction` of those frames with a mean
+  /// acceptance score of at least `bid_min_mean_score`. 0: the paper's, a bid on the first
+  /// find. The first find is the best of everyone in view, so its score is biased upwards
+  /// against a stranger; the scores of the frames after it are not (bench/RESULTS.md, "a bid
+  /// on evidence").
+  seconds bid_evidence_time{0.0};
+  double bid_min_found_fraction = 0.0;
+  double bid_min_mean_score = 0.0;
   /// Fig. 15's "random interval": uniform in [0, this].
   seconds demotion_backoff_max{1.0};
   friend bool operator==(const controller_settings&, const controller_settings&) = default;

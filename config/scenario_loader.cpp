@@ -22,13 +22,14 @@ namespace {
 // The keys each mapping allows, in schema order (the order "expected one of" lists them).
 constexpr std::array<std::string_view, 9> scenario_keys{
     "name", "run", "world", "cameras", "network", "controller", "sensing", "tasks", "faults"};
-constexpr std::array<std::string_view, 7> sensing_keys{"mode",
+constexpr std::array<std::string_view, 8> sensing_keys{"mode",
                                                        "sensor_model",
                                                        "tracker_scales",
                                                        "ego_motion",
                                                        "signature_update",
                                                        "reacquire_margin",
-                                                       "local_search_frames"};
+                                                       "local_search_frames",
+                                                       "max_surround_match"};
 constexpr std::array<std::string_view, 6> run_keys{"seed",  "duration", "tick",
                                                    "speed", "threads",  "output_dir"};
 constexpr std::array<std::string_view, 8> world_keys{
@@ -72,7 +73,7 @@ constexpr std::array<std::string_view, 13> network_keys{"loss_probability",
                                                         "hello_interval",
                                                         "neighbour_timeout",
                                                         "unicast"};
-constexpr std::array<std::string_view, 22> controller_keys{"wait_timeout",
+constexpr std::array<std::string_view, 25> controller_keys{"wait_timeout",
                                                            "search_timeout",
                                                            "min_relevance",
                                                            "heartbeat_interval",
@@ -93,6 +94,9 @@ constexpr std::array<std::string_view, 22> controller_keys{"wait_timeout",
                                                            "auction_window",
                                                            "auction_interval",
                                                            "relevance_look_time",
+                                                           "bid_evidence_time",
+                                                           "bid_min_found_fraction",
+                                                           "bid_min_mean_score",
                                                            "demotion_backoff_max"};
 constexpr std::array<std::string_view, 8> task_keys{
     "at",     "pedestrian",     "pixel",       "first_to_enter",
@@ -448,6 +452,9 @@ class scenario_parser {
     controller.read("auction_window", out.auction_window, positive);
     controller.read("auction_interval", out.auction_interval, non_negative);
     controller.read("relevance_look_time", out.relevance_look_time, positive);
+    controller.read("bid_evidence_time", out.bid_evidence_time, non_negative);
+    controller.read("bid_min_found_fraction", out.bid_min_found_fraction, probability);
+    controller.read("bid_min_mean_score", out.bid_min_mean_score, probability);
     controller.read("demotion_backoff_max", out.demotion_backoff_max, non_negative);
   }
 
@@ -460,6 +467,7 @@ class scenario_parser {
     sensing.read("signature_update", out.signature_update);
     sensing.read("reacquire_margin", out.reacquire_margin, value_bounds::closed(0.0, 1.0));
     sensing.read("local_search_frames", out.local_search_frames, value_bounds::closed(0, 10'000));
+    sensing.read("max_surround_match", out.max_surround_match, value_bounds::closed(0.0, 1.0));
   }
 
   void read_tasks(const YAML::Node& node, const std::vector<camera_settings>& cameras,

@@ -248,6 +248,9 @@ std::string to_yaml(const scenario& s) {
   out.entry(1, "auction_window", duration(controller.auction_window));
   out.entry(1, "auction_interval", duration(controller.auction_interval));
   out.entry(1, "relevance_look_time", duration(controller.relevance_look_time));
+  out.entry(1, "bid_evidence_time", duration(controller.bid_evidence_time));
+  out.entry(1, "bid_min_found_fraction", number(controller.bid_min_found_fraction));
+  out.entry(1, "bid_min_mean_score", number(controller.bid_min_mean_score));
   out.entry(1, "demotion_backoff_max", duration(controller.demotion_backoff_max));
 
   out.line(0, "sensing:");
@@ -258,6 +261,7 @@ std::string to_yaml(const scenario& s) {
   out.entry(1, "signature_update", boolean(s.sensing.signature_update));
   out.entry(1, "reacquire_margin", number(s.sensing.reacquire_margin));
   out.entry(1, "local_search_frames", fmt::format("{}", s.sensing.local_search_frames));
+  out.entry(1, "max_surround_match", number(s.sensing.max_surround_match));
 
   out.line(0, s.tasks.empty() ? "tasks: []" : "tasks:");
   for (const auto& each : s.tasks) out.line(1, task(each));

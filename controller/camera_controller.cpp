@@ -167,34 +167,59 @@ void camera_controller::take_looks(const controller_input& in, controller_output
         seen_tick_ = now_;
       }
     }
-    for (auto& p : pending_) {
-      if (p.task.task != r.task || p.bid_sent || !r.found) continue;
-      // Fig. 11 / eq. (1): the bid is the relevance as if free; a busy bidder says so.
-      p.relevance = relevance_of(r.box, false);
-      p.seen_tick = now_;
-      if (p.relevance < settings_.min_relevance) {
-        p.look_until = now_;  // below the minimum acceptable relevance: no bid
-        continue;
-      }
-      protocol::relevance_bid bid;
-      bid.task = p.task.task;
-      bid.leader = p.leader;
-      bid.auction = p.auction;
-      bid.bidder = me_.id;
-      bid.relevance = p.relevance;
-      bid.busy = task_.has_value();
-      bid.locked = locked();
-      if (task_) {
-        bid.other_task = task_->task;
-        bid.other_leader = leader_;
-      }
-      send(p.querier, bid, out);
-      p.bid_sent = true;
-      emit(out, "bid",
-           fmt::format(R"("task":{},"leader":{},"auction":{},"relevance":{:.4f},"busy":{})",
-                       bid.task, bid.leader, bid.auction, bid.relevance, bid.busy));
-    }
+    for (auto& p : pending_)
+      if (p.task.task == r.task && !p.bid_sent && !p.unconfirmed) weigh_evidence(p, r, out);
   }
+}
+
+void camera_controller::weigh_evidence(pending_query& p, const look_result& r,
+                                       controller_output& out) {
+  const auto window = config::to_ticks(settings_.bid_evidence_time, tick_);
+  if (!p.first_found) {
+    if (!r.found) return;
+    p.first_found = now_;
+    p.look_until = std::max(p.look_until, now_ + window + 1);  // the deciding frame is looked at
+  }
+  ++p.frames;
+  if (r.found) {
+    ++p.found;
+    p.score_sum += r.score;
+    // Fig. 11 / eq. (1): the bid is the relevance as if free; a busy bidder says so.
+    p.relevance = relevance_of(r.box, false);
+    p.seen_tick = now_;
+  }
+  if (now_ - *p.first_found < window) return;
+  const double found_fraction = static_cast<double>(p.found) / p.frames;
+  const double mean_score = p.score_sum / p.found;
+  if (found_fraction < settings_.bid_min_found_fraction ||
+      mean_score < settings_.bid_min_mean_score) {
+    p.unconfirmed = true;
+    p.look_until = now_;
+    return;
+  }
+  if (p.relevance < settings_.min_relevance) {
+    p.look_until = now_;  // below the minimum acceptable relevance: no bid
+    return;
+  }
+  protocol::relevance_bid bid;
+  bid.task = p.task.task;
+  bid.leader = p.leader;
+  bid.auction = p.auction;
+  bid.bidder = me_.id;
+  bid.relevance = p.relevance;
+  bid.busy = task_.has_value();
+  bid.locked = locked();
+  if (task_) {
+    bid.other_task = task_->task;
+    bid.other_leader = leader_;
+  }
+  send(p.querier, bid, out);
+  p.bid_sent = true;
+  emit(out, "bid",
+       fmt::format(R"("task":{},"leader":{},"auction":{},"relevance":{:.4f},"busy":{},)"
+                   R"("found_fraction":{:.3f},"mean_score":{:.4f})",
+                   bid.task, bid.leader, bid.auction, bid.relevance, bid.busy, found_fraction,
+                   mean_score));
 }
 
 void camera_controller::take_query(const operator_query& q, controller_output& out) {
@@ -567,8 +592,9 @@ void camera_controller::run_timers(controller_output& out) {
     const bool expired = now_ >= it->give_up_at;
     if (not_found || expired) {
       emit(out, "query_dropped",
-           fmt::format(R"("task":{},"leader":{},"reason":"{}")", it->task.task, it->leader,
-                       not_found ? "not_found" : "bidding_timeout"));
+           fmt::format(
+               R"("task":{},"leader":{},"reason":"{}")", it->task.task, it->leader,
+               not_found ? (it->unconfirmed ? "not_confirmed" : "not_found") : "bidding_timeout"));
       it = pending_.erase(it);
     } else {
       ++it;

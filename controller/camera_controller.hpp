@@ -81,6 +81,12 @@ class camera_controller {
     bool bid_sent = false;
     double relevance = 0.0;
     std::int64_t seen_tick = 0;
+    // The evidence gathered since the first find (controller.bid_evidence_time).
+    std::optional<std::int64_t> first_found;
+    int frames = 0;
+    int found = 0;
+    double score_sum = 0.0;
+    bool unconfirmed = false;
   };
   struct member_record {
     double relevance = 0.0;
@@ -103,6 +109,7 @@ class camera_controller {
   // One frame, in order.
   void take_looks(const controller_input& in, controller_output& out);
   void take_query(const operator_query& q, controller_output& out);
+  void weigh_evidence(pending_query& p, const look_result& r, controller_output& out);
   void take_message(const received_message& m, controller_output& out);
   void on_query(int from, const protocol::query_relevance& q, controller_output& out);
   void on_bid(int from, const protocol::relevance_bid& b, controller_output& out);

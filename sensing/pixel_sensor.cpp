@@ -19,6 +19,7 @@ vision::tracker_settings pixel_sensor::settings_for(const config::sensing_settin
   settings.update_signature = sensing.signature_update;
   settings.reacquire_margin = sensing.reacquire_margin;
   settings.local_search_frames = sensing.local_search_frames;
+  settings.max_surround_match = sensing.max_surround_match;
   return settings;
 }
 

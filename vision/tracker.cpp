@@ -5,6 +5,7 @@
 
 #include "vision/backprojection.hpp"
 #include "vision/ego_motion.hpp"
+#include "vision/surround_match.hpp"
 
 namespace argus::vision {
 
@@ -62,7 +63,11 @@ std::optional<track_observation> tracker::find_in(const cv::Mat& bin_indices,
     for (std::size_t i = 1; i < found.size(); ++i) other = std::max(other, found[i].score);
     if (found.front().score < other + settings_.reacquire_margin) return std::nullopt;
   }
-  return track_observation{true, found.front().box() + window.tl(), found.front().score};
+  const cv::Rect box = found.front().box() + window.tl();
+  if (settings_.max_surround_match < 1.0 &&
+      surround_match(bin_indices, box, model_.bins()) > settings_.max_surround_match)
+    return std::nullopt;
+  return track_observation{true, box, found.front().score};
 }
 
 std::optional<track_observation> tracker::find_in_frame(const cv::Mat& bin_indices,

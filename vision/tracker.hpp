@@ -54,6 +54,9 @@ struct tracker_settings {
   /// size each frame, for this many frames before the whole frame is searched; 0: the paper's,
   /// the whole frame at once.
   int local_search_frames = 0;
+  /// A box whose colours match the ring around it (surround_match()) more than this is taken
+  /// for background, not her, and not accepted; 1: the paper's, no such test.
+  double max_surround_match = 1.0;
 };
 
 /// Follows one target frame to frame: backprojects its histogram in a window around the last

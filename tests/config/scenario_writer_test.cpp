@@ -90,6 +90,10 @@ TEST(scenario_writer, round_trips_awkward_values_exactly) {
   original.sensing.signature_update = true;
   original.sensing.reacquire_margin = 0.05;
   original.sensing.local_search_frames = 30;
+  original.sensing.max_surround_match = 0.65;
+  original.controller.bid_evidence_time = config::seconds{1.0};
+  original.controller.bid_min_found_fraction = 0.6;
+  original.controller.bid_min_mean_score = 0.5;
   original.controller.zoom_in_track = false;
   expect_same(round_trip(original), original);
 }

@@ -12,6 +12,7 @@ set(argus_vision_lvr_tests
   ego_motion_test
   signature_update_test
   reacquisition_test
+  surround_match_test
   relevance_test
   emulated_sensor_test
   emulated_sensor_fidelity_test

@@ -1,0 +1,61 @@
+// The figure-ground test (surround_match, tracker_settings::max_surround_match): a person
+// matches the ring around her little, a patch of wall matches it fully; a tracker with the test
+// refuses a box on the wall that the paper's tracker takes for her.
+
+#include "vision/surround_match.hpp"
+
+#include <gtest/gtest.h>
+
+#include "opencv2/imgproc.hpp"
+#include "vision/tracker.hpp"
+
+namespace argus::vision {
+namespace {
+
+const cv::Scalar wall(120, 120, 120), blue(140, 60, 20), red(30, 30, 200);
+
+// A figure 60 px tall whose top is the wall's grey and whose trousers are blue.
+cv::Rect draw_figure(cv::Mat& image, int x) {
+  cv::rectangle(image, cv::Rect(x, 80, 20, 30), wall, cv::FILLED);
+  cv::rectangle(image, cv::Rect(x, 110, 20, 30), blue, cv::FILLED);
+  return {x, 80, 20, 60};
+}
+
+double match(const cv::Mat& bgr, const cv::Rect& box) {
+  const histogram_bins bins;
+  return surround_match(bin_index_image(bgr, bins), box, bins);
+}
+
+TEST(surround_match, a_figure_matches_its_surround_little_a_wall_fully) {
+  cv::Mat image(240, 320, CV_8UC3, wall);
+  cv::rectangle(image, cv::Rect(200, 80, 20, 60), red, cv::FILLED);
+  EXPECT_LT(match(image, {200, 80, 20, 60}), 0.05) << "red on grey";
+  EXPECT_GT(match(image, {40, 40, 20, 60}), 0.99) << "grey in grey";
+  const auto her = draw_figure(image, 100);
+  EXPECT_NEAR(match(image, her), 0.5, 0.05) << "her grey top is the wall's, her trousers not";
+}
+
+TEST(surround_match, an_empty_box_or_ring_matches_nothing) {
+  const cv::Mat image(240, 320, CV_8UC3, wall);
+  EXPECT_EQ(match(image, {400, 40, 20, 60}), 0.0) << "outside the image";
+  EXPECT_EQ(match(image, {0, 0, 320, 240}), 0.0) << "no ring left inside the image";
+}
+
+TEST(surround_match, a_tracker_with_the_test_refuses_the_wall_and_takes_her) {
+  cv::Mat with_her(240, 320, CV_8UC3, wall);
+  const auto her = draw_figure(with_her, 100);
+  const auto signature = color_histogram::of_region(with_her, her).normalized();
+  const cv::Mat empty(240, 320, CV_8UC3, wall);
+  tracker_settings paper;
+  EXPECT_TRUE(tracker(signature, paper).update(empty).found)
+      << "the paper's tracker takes half her colours, a grey patch, for her";
+  tracker_settings figure_ground;
+  figure_ground.max_surround_match = 0.65;
+  EXPECT_FALSE(tracker(signature, figure_ground).update(empty).found);
+  const auto seen = tracker(signature, figure_ground).update(with_her);
+  ASSERT_TRUE(seen.found);
+  EXPECT_GT((seen.box & her).area(), her.area() / 2);
+}
+
+}  // namespace
+}  // namespace argus::vision
