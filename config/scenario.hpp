@@ -240,6 +240,9 @@ struct sensing_settings {
   /// vision::tracker_settings::max_surround_match); 1, the default, is the paper's tracker,
   /// which has no such test.
   double max_surround_match = 1.0;
+  /// Pixel sensing: the first this many frames of the track on the operator's pick, unbroken,
+  /// are spared the figure-ground test (vision::tracker_settings::surround_grace_frames).
+  int surround_grace_frames = 0;
   friend bool operator==(const sensing_settings&, const sensing_settings&) = default;
 };
 

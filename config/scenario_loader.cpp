@@ -22,14 +22,15 @@ namespace {
 // The keys each mapping allows, in schema order (the order "expected one of" lists them).
 constexpr std::array<std::string_view, 9> scenario_keys{
     "name", "run", "world", "cameras", "network", "controller", "sensing", "tasks", "faults"};
-constexpr std::array<std::string_view, 8> sensing_keys{"mode",
+constexpr std::array<std::string_view, 9> sensing_keys{"mode",
                                                        "sensor_model",
                                                        "tracker_scales",
                                                        "ego_motion",
                                                        "signature_update",
                                                        "reacquire_margin",
                                                        "local_search_frames",
-                                                       "max_surround_match"};
+                                                       "max_surround_match",
+                                                       "surround_grace_frames"};
 constexpr std::array<std::string_view, 6> run_keys{"seed",  "duration", "tick",
                                                    "speed", "threads",  "output_dir"};
 constexpr std::array<std::string_view, 8> world_keys{
@@ -468,6 +469,8 @@ class scenario_parser {
     sensing.read("reacquire_margin", out.reacquire_margin, value_bounds::closed(0.0, 1.0));
     sensing.read("local_search_frames", out.local_search_frames, value_bounds::closed(0, 10'000));
     sensing.read("max_surround_match", out.max_surround_match, value_bounds::closed(0.0, 1.0));
+    sensing.read("surround_grace_frames", out.surround_grace_frames,
+                 value_bounds::closed(0, 1'000'000));
   }
 
   void read_tasks(const YAML::Node& node, const std::vector<camera_settings>& cameras,

@@ -20,6 +20,7 @@ vision::tracker_settings pixel_sensor::settings_for(const config::sensing_settin
   settings.reacquire_margin = sensing.reacquire_margin;
   settings.local_search_frames = sensing.local_search_frames;
   settings.max_surround_match = sensing.max_surround_match;
+  settings.surround_grace_frames = sensing.surround_grace_frames;
   return settings;
 }
 

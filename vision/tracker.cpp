@@ -31,6 +31,7 @@ void tracker::start(const cv::Rect& box) {
   lost_frames_ = 0;
   // The signature was taken from this box: the model is her at this size already.
   confirmed_ = 0;
+  picked_chain_ = 0;
   model_height_ = box.height;
 }
 
@@ -46,7 +47,8 @@ void tracker::update_model(const cv::Mat& bin_indices, const cv::Rect& box) {
 
 std::optional<track_observation> tracker::find_in(const cv::Mat& bin_indices,
                                                   const cv::Rect& window,
-                                                  const localizer_settings& localizing) {
+                                                  const localizer_settings& localizing,
+                                                  bool figure_ground) {
   if (window.empty()) return std::nullopt;
   const cv::Mat indices = bin_indices(window);
   auto image =
@@ -64,7 +66,7 @@ std::optional<track_observation> tracker::find_in(const cv::Mat& bin_indices,
     if (found.front().score < other + settings_.reacquire_margin) return std::nullopt;
   }
   const cv::Rect box = found.front().box() + window.tl();
-  if (settings_.max_surround_match < 1.0 &&
+  if (figure_ground && settings_.max_surround_match < 1.0 &&
       surround_match(bin_indices, box, model_.bins()) > settings_.max_surround_match)
     return std::nullopt;
   return track_observation{true, box, found.front().score};
@@ -102,7 +104,9 @@ track_observation tracker::update(const cv::Mat& bgr) {
   if (box_ && !lost_) {
     auto tracking = localizing;
     if (settings_.ego_motion) tracking.expected_scale = kernel_size_for(cv::Size2d(box_->size()));
-    seen = find_in(indices, window_around(*box_, settings_.search_margin) & frame, tracking);
+    const bool in_grace = picked_chain_ >= 0 && picked_chain_ < settings_.surround_grace_frames;
+    seen = find_in(indices, window_around(*box_, settings_.search_margin) & frame, tracking,
+                   !in_grace);
     in_window = seen.has_value();
   } else if (searching_locally) {
     // Where she was lost she is likely to reappear (from behind someone, or as the camera
@@ -114,6 +118,7 @@ track_observation tracker::update(const cv::Mat& bgr) {
     seen = find_in_frame(indices, localizing);
   }
   if (!seen) {
+    picked_chain_ = -1;
     lost_ = true;
     ++lost_frames_;
     confirmed_ = 0;
@@ -123,6 +128,7 @@ track_observation tracker::update(const cv::Mat& bgr) {
   lost_frames_ = 0;
   box_ = seen->box;
   confirmed_ = in_window ? confirmed_ + 1 : 0;
+  picked_chain_ = in_window && picked_chain_ >= 0 ? picked_chain_ + 1 : -1;
   update_model(indices, seen->box);
   return *seen;
 }

@@ -57,6 +57,10 @@ struct tracker_settings {
   /// A box whose colours match the ring around it (surround_match()) more than this is taken
   /// for background, not her, and not accepted; 1: the paper's, no such test.
   double max_surround_match = 1.0;
+  /// The first this many frames of a track started on the operator's pick (start()), found in
+  /// the search window without a loss, are spared the figure-ground test: she was picked there,
+  /// and at a few pixels wide her box matches its ring through blur and compression alone.
+  int surround_grace_frames = 0;
 };
 
 /// Follows one target frame to frame: backprojects its histogram in a window around the last
@@ -94,7 +98,8 @@ class tracker {
 
  private:
   std::optional<track_observation> find_in(const cv::Mat& bin_indices, const cv::Rect& window,
-                                           const localizer_settings& localizing);
+                                           const localizer_settings& localizing,
+                                           bool figure_ground = true);
   std::optional<track_observation> find_in_frame(const cv::Mat& bin_indices,
                                                  const localizer_settings& localizing);
 
@@ -110,6 +115,8 @@ class tracker {
   int lost_frames_ = 0;
   // Frames in a row found in the search window (a whole-frame find does not count).
   int confirmed_ = 0;
+  // Frames since start() found in the window without a loss; -1 once the chain is broken.
+  int picked_chain_ = -1;
   // The box height the model was last taken at (0: a signature from a message, not yet found).
   int model_height_ = 0;
 };

@@ -87,8 +87,8 @@ TEST(camera_handoff, the_group_carries_the_task_across_cameras_with_emulated_sen
 }
 
 // The shipped pixel pipeline on degraded video (seed 8): camera 7 takes the next pedestrian to
-// enter its view at 22.1 s, members join on what their own trackers find, camera 7 hands the
-// group to camera 8 at 27.3 s and camera 8 to camera 12 at 43.5 s.
+// enter its view at 22.1 s, members join on what their own trackers find, and camera 7 hands
+// the group to camera 8 at 29.7 s.
 TEST(camera_handoff, the_group_carries_the_task_across_cameras_with_pixel_sensing) {
   const auto events = run("penn_station.yaml", 45.0, "argus_handoff_pixels", 8);
   EXPECT_EQ(count(events, "task_created"), 1u);

@@ -91,6 +91,7 @@ TEST(scenario_writer, round_trips_awkward_values_exactly) {
   original.sensing.reacquire_margin = 0.05;
   original.sensing.local_search_frames = 30;
   original.sensing.max_surround_match = 0.65;
+  original.sensing.surround_grace_frames = 15;
   original.controller.bid_evidence_time = config::seconds{1.0};
   original.controller.bid_min_found_fraction = 0.6;
   original.controller.bid_min_mean_score = 0.5;

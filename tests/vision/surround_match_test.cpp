@@ -57,5 +57,33 @@ TEST(surround_match, a_tracker_with_the_test_refuses_the_wall_and_takes_her) {
   EXPECT_GT((seen.box & her).area(), her.area() / 2);
 }
 
+// The operator's pick is spared the test for surround_grace_frames unbroken frames: her grey top
+// makes her match the wall by 0.5, which a test at 0.4 refuses.
+TEST(surround_match, the_operators_pick_is_spared_the_test_for_its_grace_frames_only) {
+  cv::Mat with_her(240, 320, CV_8UC3, wall);
+  const auto her = draw_figure(with_her, 100);
+  const auto signature = color_histogram::of_region(with_her, her).normalized();
+  tracker_settings strict;
+  strict.max_surround_match = 0.4;
+  tracker no_grace(signature, strict);
+  no_grace.start(her);
+  EXPECT_FALSE(no_grace.update(with_her).found) << "without grace her pick is refused at once";
+
+  strict.surround_grace_frames = 3;
+  tracker graced(signature, strict);
+  graced.start(her);
+  for (int frame = 0; frame < 3; ++frame)
+    EXPECT_TRUE(graced.update(with_her).found) << "frame " << frame << " of the grace";
+  EXPECT_FALSE(graced.update(with_her).found) << "the grace is over";
+  EXPECT_FALSE(graced.update(with_her).found) << "a lost track gets no new grace";
+
+  tracker broken(signature, strict);
+  broken.start(her);
+  EXPECT_TRUE(broken.update(with_her).found);
+  const cv::Mat black(240, 320, CV_8UC3, cv::Scalar(0, 0, 0));
+  EXPECT_FALSE(broken.update(black).found);
+  EXPECT_FALSE(broken.update(with_her).found) << "the chain from her pick was broken";
+}
+
 }  // namespace
 }  // namespace argus::vision
