@@ -31,7 +31,7 @@ void tracker::start(const cv::Rect& box) {
   lost_frames_ = 0;
   // The signature was taken from this box: the model is her at this size already.
   confirmed_ = 0;
-  picked_chain_ = 0;
+  on_pick_ = true;
   model_height_ = box.height;
 }
 
@@ -104,7 +104,7 @@ track_observation tracker::update(const cv::Mat& bgr) {
   if (box_ && !lost_) {
     auto tracking = localizing;
     if (settings_.ego_motion) tracking.expected_scale = kernel_size_for(cv::Size2d(box_->size()));
-    const bool in_grace = picked_chain_ >= 0 && picked_chain_ < settings_.surround_grace_frames;
+    const bool in_grace = on_pick_ && confirmed_ < settings_.surround_grace_frames;
     seen = find_in(indices, window_around(*box_, settings_.search_margin) & frame, tracking,
                    !in_grace);
     in_window = seen.has_value();
@@ -118,7 +118,7 @@ track_observation tracker::update(const cv::Mat& bgr) {
     seen = find_in_frame(indices, localizing);
   }
   if (!seen) {
-    picked_chain_ = -1;
+    on_pick_ = false;
     lost_ = true;
     ++lost_frames_;
     confirmed_ = 0;
@@ -128,7 +128,7 @@ track_observation tracker::update(const cv::Mat& bgr) {
   lost_frames_ = 0;
   box_ = seen->box;
   confirmed_ = in_window ? confirmed_ + 1 : 0;
-  picked_chain_ = in_window && picked_chain_ >= 0 ? picked_chain_ + 1 : -1;
+  on_pick_ = on_pick_ && in_window;
   update_model(indices, seen->box);
   return *seen;
 }

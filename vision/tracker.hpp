@@ -115,8 +115,8 @@ class tracker {
   int lost_frames_ = 0;
   // Frames in a row found in the search window (a whole-frame find does not count).
   int confirmed_ = 0;
-  // Frames since start() found in the window without a loss; -1 once the chain is broken.
-  int picked_chain_ = -1;
+  // Whether every frame since start() found her in the window (confirmed_ counts them).
+  bool on_pick_ = false;
   // The box height the model was last taken at (0: a signature from a message, not yet found).
   int model_height_ = 0;
 };
