@@ -243,6 +243,13 @@ struct sensing_settings {
   /// Pixel sensing: the first this many frames of the track on the operator's pick, unbroken,
   /// are spared the figure-ground test (vision::tracker_settings::surround_grace_frames).
   int surround_grace_frames = 0;
+  /// Pixel sensing: the same track is also spared it while its box is less than this many
+  /// pixels tall (vision::tracker_settings::surround_grace_height_px); 0, the default: never.
+  int surround_grace_height_px = 0;
+  /// Pixel sensing: a live track is kept on a box in its search window scoring above this,
+  /// while any other find must score above rho, 0.4 (vision::tracker_settings::track_rho); 0.4,
+  /// the default, is the paper's one threshold.
+  double track_rho = 0.4;
   friend bool operator==(const sensing_settings&, const sensing_settings&) = default;
 };
 

@@ -263,6 +263,8 @@ std::string to_yaml(const scenario& s) {
   out.entry(1, "local_search_frames", fmt::format("{}", s.sensing.local_search_frames));
   out.entry(1, "max_surround_match", number(s.sensing.max_surround_match));
   out.entry(1, "surround_grace_frames", fmt::format("{}", s.sensing.surround_grace_frames));
+  out.entry(1, "surround_grace_height_px", fmt::format("{}", s.sensing.surround_grace_height_px));
+  out.entry(1, "track_rho", number(s.sensing.track_rho));
 
   out.line(0, s.tasks.empty() ? "tasks: []" : "tasks:");
   for (const auto& each : s.tasks) out.line(1, task(each));

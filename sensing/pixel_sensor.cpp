@@ -21,6 +21,8 @@ vision::tracker_settings pixel_sensor::settings_for(const config::sensing_settin
   settings.local_search_frames = sensing.local_search_frames;
   settings.max_surround_match = sensing.max_surround_match;
   settings.surround_grace_frames = sensing.surround_grace_frames;
+  settings.surround_grace_height_px = sensing.surround_grace_height_px;
+  settings.track_rho = sensing.track_rho;
   return settings;
 }
 

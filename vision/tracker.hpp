@@ -61,6 +61,13 @@ struct tracker_settings {
   /// the search window without a loss, are spared the figure-ground test: she was picked there,
   /// and at a few pixels wide her box matches its ring through blur and compression alone.
   int surround_grace_frames = 0;
+  /// The same track is also spared the test while its box is less than this many pixels tall:
+  /// until the camera has zoomed on her, her ring is a few pixels of floor, not a test.
+  int surround_grace_height_px = 0;
+  /// A live track is kept on a box in its search window that scores above this; a find
+  /// anywhere else (the whole frame, a lost track) must still score above rho. Equal to rho:
+  /// the paper's one threshold.
+  double track_rho = 0.4;
 };
 
 /// Follows one target frame to frame: backprojects its histogram in a window around the last

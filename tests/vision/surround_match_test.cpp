@@ -57,14 +57,21 @@ TEST(surround_match, a_tracker_with_the_test_refuses_the_wall_and_takes_her) {
   EXPECT_GT((seen.box & her).area(), her.area() / 2);
 }
 
-// The operator's pick is spared the test for surround_grace_frames unbroken frames: her grey top
-// makes her match the wall by 0.5, which a test at 0.4 refuses.
-TEST(surround_match, the_operators_pick_is_spared_the_test_for_its_grace_frames_only) {
-  cv::Mat with_her(240, 320, CV_8UC3, wall);
-  const auto her = draw_figure(with_her, 100);
-  const auto signature = color_histogram::of_region(with_her, her).normalized();
-  tracker_settings strict;
-  strict.max_surround_match = 0.4;
+// The operator picks her against the wall: her grey top makes her match the wall by 0.5, which
+// a test at 0.4 refuses.
+struct grey_top_pick : ::testing::Test {
+  cv::Mat with_her = cv::Mat(240, 320, CV_8UC3, wall);
+  cv::Rect her = draw_figure(with_her, 100);
+  color_histogram signature = color_histogram::of_region(with_her, her).normalized();
+  tracker_settings strict = [] {
+    tracker_settings s;
+    s.max_surround_match = 0.4;
+    return s;
+  }();
+};
+
+// The pick is spared the test for surround_grace_frames unbroken frames.
+TEST_F(grey_top_pick, the_operators_pick_is_spared_the_test_for_its_grace_frames_only) {
   tracker no_grace(signature, strict);
   no_grace.start(her);
   EXPECT_FALSE(no_grace.update(with_her).found) << "without grace her pick is refused at once";
@@ -83,6 +90,23 @@ TEST(surround_match, the_operators_pick_is_spared_the_test_for_its_grace_frames_
   const cv::Mat black(240, 320, CV_8UC3, cv::Scalar(0, 0, 0));
   EXPECT_FALSE(broken.update(black).found);
   EXPECT_FALSE(broken.update(with_her).found) << "the chain from her pick was broken";
+}
+
+// surround_grace_height_px: the pick is also spared the test while its box is shorter than that,
+// however many frames it lasts; a box taller than the limit is tested.
+TEST_F(grey_top_pick, the_operators_pick_is_spared_the_test_while_her_box_is_small) {
+  strict.surround_grace_height_px = her.height + 30;
+  tracker small(signature, strict);
+  small.start(her);
+  for (int frame = 0; frame < 30; ++frame) {
+    const auto seen = small.update(with_her);
+    ASSERT_TRUE(seen.found) << "frame " << frame;
+    ASSERT_LT(seen.box.height, strict.surround_grace_height_px);
+  }
+  strict.surround_grace_height_px = her.height / 2;
+  tracker tall(signature, strict);
+  tall.start(her);
+  EXPECT_FALSE(tall.update(with_her).found) << "her box is taller than the limit: tested";
 }
 
 }  // namespace

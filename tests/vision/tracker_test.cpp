@@ -95,6 +95,41 @@ ptz_limits ptz_head() {
   return limits;
 }
 
+// track_rho: a live track is kept on a box in its window that scores above track_rho, while a
+// find anywhere else must still score above rho. Her top has turned green in the frame looked
+// at (a shadow, another camera's colours), so she matches her red-and-blue signature by about
+// half.
+TEST(tracker, a_live_track_is_kept_above_track_rho_a_new_find_needs_rho) {
+  const cv::Scalar red(30, 30, 200), blue(140, 60, 20), green(40, 170, 40);
+  const cv::Mat floor = background(5);
+  cv::Mat first = floor.clone();
+  const auto her = draw_pedestrian(first, {100, 60}, 90, red, blue);
+  const auto signature = color_histogram::of_region(first, her).normalized();
+  cv::Mat changed = floor.clone();
+  draw_pedestrian(changed, {100, 60}, 90, green, blue);
+
+  tracker_settings one_threshold;
+  one_threshold.rho = 0.6;
+  one_threshold.track_rho = 0.6;
+  tracker paper(signature, one_threshold);
+  paper.start(her);
+  EXPECT_FALSE(paper.update(changed).found) << "half her colours are below rho";
+
+  auto hysteresis = one_threshold;
+  hysteresis.track_rho = 0.35;
+  tracker kept(signature, hysteresis);
+  kept.start(her);
+  for (int frame = 0; frame < 5; ++frame) {
+    const auto seen = kept.update(changed);
+    ASSERT_TRUE(seen.found) << "frame " << frame;
+    EXPECT_TRUE(her.contains((seen.box.tl() + seen.box.br()) / 2)) << "on her, frame " << frame;
+    EXPECT_GT((seen.box & her).area(), seen.box.area() / 2) << "frame " << frame;
+    EXPECT_LT(seen.score, 0.6);
+  }
+  EXPECT_FALSE(tracker(signature, hysteresis).update(changed).found)
+      << "a whole-frame find, no track yet: rho applies";
+}
+
 TEST(tracking_fsm, wait_widens_the_zoom_then_search_sweeps_then_fails) {
   config::controller_settings controller;  // Table 2: wait 2 min, search 5 min
   tracking_fsm fsm(ptz_head(), controller);
