@@ -104,7 +104,7 @@ track_observation tracker::update(const cv::Mat& bgr) {
   if (box_ && !lost_) {
     auto tracking = localizing;
     if (settings_.ego_motion) tracking.expected_scale = kernel_size_for(cv::Size2d(box_->size()));
-    tracking.rho = settings_.track_rho;
+    tracking.rho = settings_.track_rho.value_or(settings_.rho);
     const bool in_grace = on_pick_ && (confirmed_ < settings_.surround_grace_frames ||
                                        box_->height < settings_.surround_grace_height_px);
     seen = find_in(indices, window_around(*box_, settings_.search_margin) & frame, tracking,

@@ -65,9 +65,9 @@ struct tracker_settings {
   /// until the camera has zoomed on her, her ring is a few pixels of floor, not a test.
   int surround_grace_height_px = 0;
   /// A live track is kept on a box in its search window that scores above this; a find
-  /// anywhere else (the whole frame, a lost track) must still score above rho. Equal to rho:
-  /// the paper's one threshold.
-  double track_rho = 0.4;
+  /// anywhere else (the whole frame, a lost track) must still score above rho. Unset: rho, the
+  /// paper's one threshold.
+  std::optional<double> track_rho;
 };
 
 /// Follows one target frame to frame: backprojects its histogram in a window around the last

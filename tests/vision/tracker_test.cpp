@@ -110,7 +110,6 @@ TEST(tracker, a_live_track_is_kept_above_track_rho_a_new_find_needs_rho) {
 
   tracker_settings one_threshold;
   one_threshold.rho = 0.6;
-  one_threshold.track_rho = 0.6;
   tracker paper(signature, one_threshold);
   paper.start(her);
   EXPECT_FALSE(paper.update(changed).found) << "half her colours are below rho";
