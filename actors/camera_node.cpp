@@ -67,6 +67,8 @@ struct camera_node_state {
   config::seconds tick_length{1.0 / 15.0};
   std::optional<sensing::pixel_sensor> pixels;
   std::optional<sensing::emulated_looks> emulated;
+  // sensing.identity: ground_truth: finds on anyone but the task's pedestrian are refused.
+  bool identity_from_truth = false;
   std::optional<vision::imaging_model> imaging;
   std::vector<controller::look_request> looks;  // asked for by the controller's last step
   std::vector<due_task> tasks;
@@ -379,6 +381,28 @@ caf::behavior& behaviour_for(camera_node_state& st) {
   return st.idle;
 }
 
+// sensing.identity: ground_truth: whether a box found for a task is on its pedestrian, by the
+// evaluation's own test (eval::label_box: the box shows her and holds her visible centre). The
+// visible boxes are computed on the first find asked about.
+sensing::pixel_sensor::truth_check truth_box_check(camera_node_state& st,
+                                                   const world::snapshot& frame) {
+  if (!st.identity_from_truth || !st.log) return {};
+  auto visible = std::make_shared<std::optional<std::vector<vision::pedestrian_view>>>();
+  return [&st, &frame, visible](controller::task_id task, const cv::Rect& box) {
+    const auto target = st.log->target_of(task);
+    if (!target) return false;
+    if (!*visible) *visible = vision::visible_pedestrians(frame, *st.world->station, view_of(st));
+    return eval::label_box(cv::Rect2d(box), *target, **visible, st.frame.width_px,
+                           st.frame.height_px)
+        .observed;
+  };
+}
+
+sensing::emulated_looks::truth_check truth_id_check(camera_node_state& st) {
+  if (!st.identity_from_truth || !st.log) return {};
+  return [&st](controller::task_id task, int id) { return st.log->target_of(task) == id; };
+}
+
 // The second half of a turn, once the frame (if any) is there: sense, decide, act.
 void finish_turn(node_actor* self, const cv::Mat& image) {
   auto& st = self->state;
@@ -386,9 +410,11 @@ void finish_turn(node_actor* self, const cv::Mat& image) {
   const auto snap = std::move(st.snap);
   if (snap && !st.looks.empty()) {
     if (st.pixels && !image.empty()) {
-      st.input.looks = st.pixels->look(image, st.head->state(), st.looks);
+      st.input.looks =
+          st.pixels->look(image, st.head->state(), st.looks, truth_box_check(st, *snap));
     } else if (st.emulated) {
-      st.input.looks = st.emulated->look(*snap, *st.world->station, view_of(st), st.looks);
+      st.input.looks =
+          st.emulated->look(*snap, *st.world->station, view_of(st), st.looks, truth_id_check(st));
     }
   }
   take_queries(st, snap.get(), image);
@@ -553,6 +579,7 @@ caf::behavior camera_node(node_actor* self, const config::scenario& scenario,
   st.world = std::move(world);
   if (st.world) st.log = st.world->log;
   if (st.world) {
+    st.identity_from_truth = scenario.sensing.identity == config::identity_source::ground_truth;
     if (scenario.sensing.mode == config::sensing_mode::pixels) {
       st.pixels.emplace(sensing::pixel_sensor::settings_for(scenario.sensing));
       st.imaging = vision::imaging_model::for_camera(camera.imaging, scenario.run.seed, camera.id);

@@ -154,4 +154,13 @@ struct enum_names<tracker_scales> {
   }};
 };
 
+/// Names for the sensing `identity`.
+template <>
+struct enum_names<identity_source> {
+  static constexpr std::array<enum_entry<identity_source>, 2> entries{{
+      {identity_source::appearance, "appearance"},
+      {identity_source::ground_truth, "ground_truth"},
+  }};
+};
+
 }  // namespace argus::config

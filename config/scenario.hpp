@@ -210,6 +210,13 @@ enum class sensing_mode { pixels, emulated };
 /// last box (vision::scale_rule::target), or the paper's (0.1 ... 1) x frame height / 7.
 enum class tracker_scales { target, paper };
 
+/// Who a camera's find is taken for: whoever its sensing settles on (the paper's cameras, which
+/// know a target only by her signature), or, as a diagnostic bound, only the task's pedestrian
+/// by ground truth: a find on anyone else counts as none, a perfect test of identity and of her
+/// absence that no camera has. The cameras still find, localise and lose her with their own
+/// sensing; only their mistakes of identity are taken away.
+enum class identity_source { appearance, ground_truth };
+
 /// How camera nodes sense (Section III-A, B).
 struct sensing_settings {
   sensing_mode mode = sensing_mode::pixels;
@@ -250,6 +257,8 @@ struct sensing_settings {
   /// while any other find must score above rho, 0.4 (vision::tracker_settings::track_rho); 0.4,
   /// the default, is the paper's one threshold.
   double track_rho = 0.4;
+  /// Whom a find is taken for (identity_source); appearance, the default, is the paper's.
+  identity_source identity = identity_source::appearance;
   friend bool operator==(const sensing_settings&, const sensing_settings&) = default;
 };
 

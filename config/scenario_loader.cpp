@@ -22,7 +22,7 @@ namespace {
 // The keys each mapping allows, in schema order (the order "expected one of" lists them).
 constexpr std::array<std::string_view, 9> scenario_keys{
     "name", "run", "world", "cameras", "network", "controller", "sensing", "tasks", "faults"};
-constexpr std::array<std::string_view, 11> sensing_keys{"mode",
+constexpr std::array<std::string_view, 12> sensing_keys{"mode",
                                                         "sensor_model",
                                                         "tracker_scales",
                                                         "ego_motion",
@@ -32,7 +32,8 @@ constexpr std::array<std::string_view, 11> sensing_keys{"mode",
                                                         "max_surround_match",
                                                         "surround_grace_frames",
                                                         "surround_grace_height_px",
-                                                        "track_rho"};
+                                                        "track_rho",
+                                                        "identity"};
 constexpr std::array<std::string_view, 6> run_keys{"seed",  "duration", "tick",
                                                    "speed", "threads",  "output_dir"};
 constexpr std::array<std::string_view, 8> world_keys{
@@ -476,6 +477,7 @@ class scenario_parser {
     sensing.read("surround_grace_height_px", out.surround_grace_height_px,
                  value_bounds::closed(0, 100'000));
     sensing.read("track_rho", out.track_rho, value_bounds::closed(0.0, 1.0));
+    sensing.read("identity", out.identity);
   }
 
   void read_tasks(const YAML::Node& node, const std::vector<camera_settings>& cameras,

@@ -14,7 +14,7 @@ emulated_looks::emulated_looks(vision::sensor_model model, std::uint64_t run_see
 
 std::vector<controller::look_result> emulated_looks::look(
     const world::snapshot& frame, const world::station& where, const vision::camera_view& view,
-    const std::vector<controller::look_request>& looks) {
+    const std::vector<controller::look_request>& looks, const truth_check& is_target) {
   std::map<controller::task_id, int> kept;
   std::vector<controller::look_result> out;
   const auto seen = vision::visible_pedestrians(frame, where, view);
@@ -27,6 +27,12 @@ std::vector<controller::look_result> emulated_looks::look(
       const auto* who = frame.find(v.id);
       const double match = vision::normalized_intersection(wanted, signature_of(who->look));
       if (match < min_match_) continue;
+      if (is_target) {
+        // A perfect re-identification among the look-alikes: hers, if she is one of them.
+        if (!is_target(l.task, v.id)) continue;
+        best = v.id;
+        break;
+      }
       if (followed != following_.end() && followed->second == v.id) {
         best = v.id;
         break;
@@ -39,7 +45,7 @@ std::vector<controller::look_result> emulated_looks::look(
     controller::look_result r{l.task, false, {}, 0.0};
     if (best >= 0) {
       const auto observed = sensor_.look_for(best, frame, seen, view);
-      if (observed.found) {
+      if (observed.found && (!is_target || is_target(l.task, observed.detection.pedestrian_id))) {
         r.found = true;
         r.box = cv::Rect2d(observed.detection.box);
         r.score = observed.detection.confidence;

@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <map>
 #include <vector>
 
@@ -25,11 +26,17 @@ class emulated_looks {
   emulated_looks(vision::sensor_model model, std::uint64_t run_seed, int camera_id,
                  double min_match = 0.4);
 
-  /// Looks for every requested target in `frame` as seen through `view`.
+  /// Whether pedestrian `id` is task `task`'s (sensing.identity: ground_truth).
+  using truth_check = std::function<bool(controller::task_id task, int id)>;
+
+  /// Looks for every requested target in `frame` as seen through `view`. With `is_target`, of the
+  /// pedestrians matching the signature only the task's own is taken (a perfect
+  /// re-identification); the error model still decides whether she is missed.
   std::vector<controller::look_result> look(const world::snapshot& frame,
                                             const world::station& where,
                                             const vision::camera_view& view,
-                                            const std::vector<controller::look_request>& looks);
+                                            const std::vector<controller::look_request>& looks,
+                                            const truth_check& is_target = {});
 
   /// The operator picked pedestrian `id` for `task`: the signature of its appearance.
   protocol::signature acquire(controller::task_id task, const world::snapshot& frame, int id);

@@ -28,7 +28,7 @@ vision::tracker_settings pixel_sensor::settings_for(const config::sensing_settin
 
 std::vector<controller::look_result> pixel_sensor::look(
     const cv::Mat& bgr, const vision::ptz_state& pose,
-    const std::vector<controller::look_request>& looks) {
+    const std::vector<controller::look_request>& looks, const truth_check& is_target) {
   std::map<controller::task_id, vision::tracker> kept;
   const vision::frame_size frame{bgr.cols, bgr.rows};
   if (settings_.ego_motion && last_pose_)
@@ -39,7 +39,9 @@ std::vector<controller::look_result> pixel_sensor::look(
     auto it = trackers_.find(l.task);
     if (it == trackers_.end())
       it = trackers_.emplace(l.task, vision::tracker(to_histogram(l.target), settings_)).first;
-    const auto seen = it->second.update(bgr);
+    vision::tracker::find_check check;
+    if (is_target) check = [&](const cv::Rect& box) { return is_target(l.task, box); };
+    const auto seen = it->second.update(bgr, check);
     out.push_back({l.task, seen.found, cv::Rect2d(seen.box), seen.score});
     kept.insert(trackers_.extract(it));
   }

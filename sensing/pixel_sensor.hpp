@@ -1,5 +1,6 @@
 #pragma once
 
+#include <functional>
 #include <map>
 #include <optional>
 #include <vector>
@@ -22,11 +23,18 @@ class pixel_sensor {
   /// The trackers' settings for a scenario's `sensing` block (tracker_scales, ego_motion).
   static vision::tracker_settings settings_for(const config::sensing_settings& sensing);
 
+  /// Whether a box found for a task is on that task's pedestrian (sensing.identity:
+  /// ground_truth; simulator knowledge, given by the node's host, never to the controller).
+  using truth_check = std::function<bool(controller::task_id, const cv::Rect&)>;
+
   /// Looks for every requested target in `bgr`, taken at `pose`; trackers of targets no longer
   /// asked for are dropped, new ones search the whole frame. With ego-motion compensation on,
-  /// each track's last box first follows the camera's move since the last frame.
+  /// each track's last box first follows the camera's move since the last frame. With
+  /// `is_target`, each tracker takes the first of its candidate regions that is the task's
+  /// pedestrian (vision::tracker::update with a check), or none.
   std::vector<controller::look_result> look(const cv::Mat& bgr, const vision::ptz_state& pose,
-                                            const std::vector<controller::look_request>& looks);
+                                            const std::vector<controller::look_request>& looks,
+                                            const truth_check& is_target = {});
 
   /// The operator picked the pedestrian in `box` for `task` in `bgr`, taken at `pose`: its
   /// signature from the pixels in the box, and a tracker started there.

@@ -48,7 +48,7 @@ void tracker::update_model(const cv::Mat& bin_indices, const cv::Rect& box) {
 std::optional<track_observation> tracker::find_in(const cv::Mat& bin_indices,
                                                   const cv::Rect& window,
                                                   const localizer_settings& localizing,
-                                                  bool figure_ground) {
+                                                  bool figure_ground, const find_check& check) {
   if (window.empty()) return std::nullopt;
   const cv::Mat indices = bin_indices(window);
   auto image =
@@ -59,6 +59,17 @@ std::optional<track_observation> tracker::find_in(const cv::Mat& bin_indices,
   localizer_ = multiscale_localizer(localizing);
   auto found = localizer_.localize(b, histogram_scorer(indices, model_));
   if (found.empty()) return std::nullopt;
+  const auto background = [&](const cv::Rect& box) {
+    return figure_ground && settings_.max_surround_match < 1.0 &&
+           surround_match(bin_indices, box, model_.bins()) > settings_.max_surround_match;
+  };
+  if (check) {
+    for (const auto& region : found) {
+      const cv::Rect box = region.box() + window.tl();
+      if (!background(box) && check(box)) return track_observation{true, box, region.score};
+    }
+    return std::nullopt;
+  }
   // A region only a little better than a look-alike elsewhere is as likely to be the other.
   if (found.size() > 1) {
     double other = 0.0;
@@ -66,17 +77,17 @@ std::optional<track_observation> tracker::find_in(const cv::Mat& bin_indices,
     if (found.front().score < other + settings_.reacquire_margin) return std::nullopt;
   }
   const cv::Rect box = found.front().box() + window.tl();
-  if (figure_ground && settings_.max_surround_match < 1.0 &&
-      surround_match(bin_indices, box, model_.bins()) > settings_.max_surround_match)
-    return std::nullopt;
+  if (background(box)) return std::nullopt;
   return track_observation{true, box, found.front().score};
 }
 
 std::optional<track_observation> tracker::find_in_frame(const cv::Mat& bin_indices,
-                                                        const localizer_settings& localizing) {
+                                                        const localizer_settings& localizing,
+                                                        const find_check& check) {
   auto whole = localizing;
-  if (settings_.reacquire_margin > 0.0) whole.max_regions = 2;
-  return find_in(bin_indices, cv::Rect(0, 0, bin_indices.cols, bin_indices.rows), whole);
+  if (settings_.reacquire_margin > 0.0 && !check) whole.max_regions = 2;
+  return find_in(bin_indices, cv::Rect(0, 0, bin_indices.cols, bin_indices.rows), whole, true,
+                 check);
 }
 
 void tracker::follow_camera(const ptz_state& from, const ptz_state& to, const frame_size& frame) {
@@ -90,13 +101,13 @@ void tracker::follow_camera(const ptz_state& from, const ptz_state& to, const fr
   box_ = rounded;
 }
 
-track_observation tracker::update(const cv::Mat& bgr) {
+track_observation tracker::update(const cv::Mat& bgr, const find_check& check) {
   const auto indices = bin_index_image(bgr, target_.bins());
   const cv::Rect frame(0, 0, bgr.cols, bgr.rows);
   std::optional<cv::Size2d> size;
   if (box_) size = cv::Size2d(box_->size());
-  const auto localizing =
-      localizer_settings_for(settings_.scales, size, bgr.rows, settings_.rho, 1);
+  const auto localizing = localizer_settings_for(settings_.scales, size, bgr.rows, settings_.rho,
+                                                 check ? checked_candidates : 1);
   std::optional<track_observation> seen;
   bool in_window = false;
   // A lost track still within local_search_frames is looked for only around its last box.
@@ -108,16 +119,16 @@ track_observation tracker::update(const cv::Mat& bgr) {
     const bool in_grace = on_pick_ && (confirmed_ < settings_.surround_grace_frames ||
                                        box_->height < settings_.surround_grace_height_px);
     seen = find_in(indices, window_around(*box_, settings_.search_margin) & frame, tracking,
-                   !in_grace);
+                   !in_grace, check);
     in_window = seen.has_value();
   } else if (searching_locally) {
     // Where she was lost she is likely to reappear (from behind someone, or as the camera
     // stops); the whole frame holds look-alikes. The window grows by a box size a frame.
     const double margin = settings_.search_margin * (2 + lost_frames_);
-    seen = find_in(indices, window_around(*box_, margin) & frame, localizing);
+    seen = find_in(indices, window_around(*box_, margin) & frame, localizing, true, check);
   }
   if (!seen && !searching_locally && (settings_.search_whole_frame || !box_)) {
-    seen = find_in_frame(indices, localizing);
+    seen = find_in_frame(indices, localizing, check);
   }
   if (!seen) {
     on_pick_ = false;

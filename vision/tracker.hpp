@@ -3,6 +3,7 @@
 // Colour-indexing tracker (Section III-B) and the child FSM of the camera controller,
 // Track / Wait / Search (Fig. 10, inset).
 
+#include <functional>
 #include <optional>
 
 #include "config/scenario.hpp"
@@ -83,8 +84,17 @@ class tracker {
   /// Starts (or restarts) the track at `box` in the current frame.
   void start(const cv::Rect& box);
 
-  /// Processes one BGR frame.
-  track_observation update(const cv::Mat& bgr);
+  /// Whether a box the tracker found is her (ground truth standing in for a perfect
+  /// re-identification; sensing.identity).
+  using find_check = std::function<bool(const cv::Rect&)>;
+
+  /// How many regions above rho a search with a check weighs (the localiser's candidates).
+  static constexpr int checked_candidates = 8;
+
+  /// Processes one BGR frame. With `check`, the tracker weighs up to checked_candidates regions
+  /// above rho, in the localiser's order, and takes the first the check accepts: a perfect
+  /// re-identification among what its colour indexing finds. None accepted is no find.
+  track_observation update(const cv::Mat& bgr, const find_check& check = {});
 
   /// The camera moved from `from` to `to` since the last frame: the last box is carried to
   /// where the same ray is now (reproject_box()), so the next search starts there.
@@ -105,10 +115,11 @@ class tracker {
 
  private:
   std::optional<track_observation> find_in(const cv::Mat& bin_indices, const cv::Rect& window,
-                                           const localizer_settings& localizing,
-                                           bool figure_ground = true);
+                                           const localizer_settings& localizing, bool figure_ground,
+                                           const find_check& check);
   std::optional<track_observation> find_in_frame(const cv::Mat& bin_indices,
-                                                 const localizer_settings& localizing);
+                                                 const localizer_settings& localizing,
+                                                 const find_check& check);
 
   void update_model(const cv::Mat& bin_indices, const cv::Rect& box);
 

@@ -316,11 +316,12 @@ TEST(scenario_loader, trackers_keep_their_signature_and_search_the_whole_frame_u
   EXPECT_EQ(paper.sensing.surround_grace_frames, 0);
   EXPECT_EQ(paper.sensing.surround_grace_height_px, 0);
   EXPECT_EQ(paper.sensing.track_rho, 0.4);
+  EXPECT_EQ(paper.sensing.identity, config::identity_source::appearance);
   EXPECT_EQ(paper.controller.bid_evidence_time, config::seconds{0.0});
   const auto ours = parse_scenario(
       "sensing: {signature_update: true, reacquire_margin: 0.05, local_search_frames: 30,\n"
       "          max_surround_match: 0.65, surround_grace_frames: 15,\n"
-      "          surround_grace_height_px: 40, track_rho: 0.3}\n"
+      "          surround_grace_height_px: 40, track_rho: 0.3, identity: ground_truth}\n"
       "controller: {bid_evidence_time: 1 s, bid_min_found_fraction: 0.6,\n"
       "             bid_min_mean_score: 0.5}\n",
       "a.yaml");
@@ -328,6 +329,7 @@ TEST(scenario_loader, trackers_keep_their_signature_and_search_the_whole_frame_u
   EXPECT_EQ(ours.sensing.surround_grace_frames, 15);
   EXPECT_EQ(ours.sensing.surround_grace_height_px, 40);
   EXPECT_EQ(ours.sensing.track_rho, 0.3);
+  EXPECT_EQ(ours.sensing.identity, config::identity_source::ground_truth);
   EXPECT_EQ(ours.controller.bid_evidence_time, config::seconds{1.0});
   EXPECT_EQ(ours.controller.bid_min_found_fraction, 0.6);
   EXPECT_EQ(ours.controller.bid_min_mean_score, 0.5);
@@ -342,6 +344,8 @@ TEST(scenario_loader, trackers_keep_their_signature_and_search_the_whole_frame_u
                }).empty());
   EXPECT_FALSE(
       problems_of([] { parse_scenario("sensing: {track_rho: 1.2}\n", "a.yaml"); }).empty());
+  EXPECT_FALSE(
+      problems_of([] { parse_scenario("sensing: {identity: truth}\n", "a.yaml"); }).empty());
   EXPECT_FALSE(problems_of([] {
                  parse_scenario("controller: {bid_evidence_time: -1 s}\n", "a.yaml");
                }).empty());

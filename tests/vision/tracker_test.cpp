@@ -87,6 +87,41 @@ TEST(tracker, holds_through_partial_occlusion_and_regains_after_full) {
   EXPECT_EQ(regained, 25);           // and regained after it
 }
 
+// sensing.identity: ground_truth hands the tracker a check that stands for a perfect identity
+// test: she leaves the frame while a twin stays in it. The paper's tracker takes the twin; with
+// the check the track is lost, and found again when she comes back.
+TEST(tracker, a_find_the_check_refuses_is_no_find) {
+  const cv::Scalar red(30, 30, 200), blue(140, 60, 20);
+  const cv::Mat floor = background(7);
+  cv::Mat both = floor.clone();
+  const auto her = draw_pedestrian(both, {60, 60}, 90, red, blue);
+  const auto twin = draw_pedestrian(both, {220, 70}, 90, red, blue);
+  cv::Mat twin_only = floor.clone();
+  draw_pedestrian(twin_only, twin.tl(), 90, red, blue);
+  const auto signature = color_histogram::of_region(both, her).normalized();
+  const tracker::find_check on_her = [&](const cv::Rect& box) {
+    return (box & her).area() > box.area() / 2;
+  };
+
+  tracker paper(signature);
+  paper.start(her);
+  ASSERT_TRUE(paper.update(both).found);
+  const auto taken = paper.update(twin_only);
+  ASSERT_TRUE(taken.found) << "without the check, the twin is taken for her";
+  EXPECT_GT((taken.box & twin).area(), taken.box.area() / 2);
+
+  tracker checked(signature);
+  checked.start(her);
+  ASSERT_TRUE(checked.update(both, on_her).found);
+  for (int frame = 0; frame < 3; ++frame) {
+    EXPECT_FALSE(checked.update(twin_only, on_her).found) << "frame " << frame;
+    EXPECT_TRUE(checked.lost());
+  }
+  const auto back = checked.update(both, on_her);
+  ASSERT_TRUE(back.found) << "she is found again where she is";
+  EXPECT_GT((back.box & her).area(), back.box.area() / 2);
+}
+
 ptz_limits ptz_head() {
   ptz_limits limits;
   limits.pan = {-90.0, 90.0};
