@@ -373,6 +373,11 @@ void camera_controller::on_status(int from, const protocol::status& s, controlle
   // Following them would put the group under a leader that is gone (and, merging by highest
   // id, keep putting it there).
   if (retired(s.sender) || retired(s.leader)) return;
+  if (role_ == group_role::member && handed_over_at_) {
+    // The hand-over is confirmed by the new leader's own status as leader: now leave.
+    if (s.sender == leader_ && s.leader == leader_) leave_task("handed_over", out);
+    return;
+  }
   if (role_ == group_role::member) {
     // Members forward group messages between their leader and the cameras they recruited
     // through their own neighbourhood, which may be beyond the leader's hop limit.
@@ -505,6 +510,7 @@ void camera_controller::start_task(const protocol::task_description& task, group
   relayed_for_.clear();
   leader_members_.reset();
   relayed_by_.clear();
+  handed_over_at_.reset();
   next_auction_at_ = now_;
 }
 
@@ -535,6 +541,7 @@ void camera_controller::leave_task(std::string_view reason, controller_output& o
   if (role_ == group_role::leader && members_.empty())
     emit(out, "group_vanished", fmt::format(R"("task":{})", task_->task));
   task_.reset();
+  handed_over_at_.reset();
   forget_group();
 }
 
@@ -542,6 +549,7 @@ void camera_controller::become_leader(std::string_view reason, controller_output
   const int previous = leader_;
   role_ = group_role::leader;
   leader_ = me_.id;
+  handed_over_at_.reset();
   forget_group();
   next_auction_at_ = now_;
   emit_leader_changed(me_.id, previous, reason, out);
@@ -553,6 +561,7 @@ void camera_controller::follow_leader(int leader, std::string_view reason, contr
   leader_ = leader;
   last_leader_status_ = now_;
   leader_members_.reset();
+  handed_over_at_.reset();
   forget_group();
   emit_leader_changed(leader, previous, reason, out);
   // At once, so that the new leader counts this node (and this node's members follow).
@@ -625,6 +634,15 @@ void camera_controller::run_timers(controller_output& out) {
 }
 
 void camera_controller::follow(controller_output& out) {
+  if (handed_over_at_) {
+    // No heartbeat and no leaving on low relevance meanwhile: it would be counted as a member,
+    // or leave the task to a leader that may never have it.
+    if (now_ - *handed_over_at_ < ticks(settings_.leader_failure_timeout)) return;
+    handed_over_at_.reset();
+    become_leader("handover_unconfirmed", out);
+    lead(out);
+    return;
+  }
   if (now_ - last_leader_status_ >= ticks(settings_.leader_failure_timeout)) {
     // Section IV-C: no status from the leader in time: it is taken as failed.
     retired_[leader_] = now_;
@@ -697,7 +715,15 @@ bool camera_controller::hand_over(double mine, controller_output& out) {
   emit(out, "handoff",
        fmt::format(R"("task":{},"from":{},"to":{},"relevance":{:.4f})", task_->task, me_.id,
                    best->first, best->second.relevance));
-  leave_task("handed_over", out);
+  // Not gone yet: the hand-over may be lost, or its new leader may have left or failed since
+  // its last status; until the new leader is heard leading, this node is the task's only keeper.
+  // (No leader_changed here: the new leader logs the change when it takes the group.)
+  role_ = group_role::member;
+  leader_ = best->first;
+  last_leader_status_ = now_;
+  leader_members_.reset();
+  forget_group();
+  handed_over_at_ = now_;
   return true;
 }
 

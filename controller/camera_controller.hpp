@@ -189,6 +189,11 @@ class camera_controller {
   // Member: cameras it recruited through its neighbourhood (forwarded their join), whose
   // status it forwards to the leader and to which it forwards the leader's.
   std::set<int> relayed_for_;
+  // A leader that handed its group over stays in the task, following the new leader, until a
+  // status of the new leader's says it leads; when it handed over. None heard within the leader
+  // failure timeout (the hand-over lost, the new leader gone or gone from the task): it takes
+  // the group back rather than leave the task with nobody.
+  std::optional<std::int64_t> handed_over_at_;
   // Member: the members its leader's last status listed (none heard yet: nullopt).
   std::optional<std::vector<int>> leader_members_;
   // Leaders that handed their group over or were taken for failed, and when: their late

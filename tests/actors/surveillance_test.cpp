@@ -38,7 +38,7 @@ std::vector<nlohmann::json> events_of(const run_outcome& o) {
 }
 
 // The cameras leading task 0 at `t` seconds, from the log: leaders come with task_created and
-// self-promotions, and go when demoted (leader_changed to another) or when they leave.
+// self-promotions, and go when demoted (leader_changed to another), hand over, or leave.
 std::set<int> leaders_at(const std::vector<nlohmann::json>& events, double t) {
   std::set<int> leaders;
   for (const auto& e : events) {
@@ -52,6 +52,8 @@ std::set<int> leaders_at(const std::vector<nlohmann::json>& events, double t) {
         leaders.erase(e["camera"].get<int>());
     }
     if (kind == "left_task" && e["role"] == "leader") leaders.erase(e["camera"].get<int>());
+    // A leader that hands its group over follows the new leader until it hears it lead.
+    if (kind == "handoff") leaders.erase(e["camera"].get<int>());
     if (kind == "fault" && e["fault"] == "crash" && e["applied"] == true)
       leaders.erase(e["camera"].get<int>());
   }

@@ -117,10 +117,38 @@ TEST(group_protocol, a_leader_that_loses_its_target_hands_the_group_over) {
   h.run_until(200);
   EXPECT_EQ(h.count("handoff", 1), 1u);
   EXPECT_EQ(h.node(2).role(), group_role::leader);
+  // It left once it heard camera 2 lead.
   EXPECT_EQ(h.node(1).state(), node_state::idle);
+  EXPECT_EQ(h.count("left_task", 1), 1u);
   // Its task over, the camera goes back to its default pose (Section III-C, reset).
   ASSERT_TRUE(h.last_command(1));
   EXPECT_EQ(*h.last_command(1), node_identity::from(testing::test_camera(1)).home);
+}
+
+// The member given the group crashes as the hand-over is sent (or the hand-over is lost and the
+// member leaves): nobody would hold the task. The old leader, not heard from a new leader
+// within the leader failure timeout, takes the group back and keeps looking.
+TEST(group_protocol, a_hand_over_nobody_takes_up_is_taken_back) {
+  auto h = three_cameras();
+  h.run_until(100);
+  ASSERT_EQ(h.node(1).members(), std::vector<int>{2});
+  h.sees = [](int camera, task_id, std::int64_t) -> std::optional<cv::Rect2d> {
+    if (camera == 2) return centred_box();
+    return std::nullopt;
+  };
+  std::int64_t handed = -1;
+  for (std::int64_t t = 101; t < 200 && handed < 0; ++t) {
+    h.run_until(t);
+    if (h.count("handoff", 1) == 1) handed = t;
+  }
+  ASSERT_GT(handed, 0) << "camera 1 never handed its group over";
+  h.crash(2);
+  EXPECT_EQ(h.node(1).state(), node_state::performing_task) << "it waits for the new leader";
+  h.run_until(handed + 35);  // leader failure timeout 3 s
+  EXPECT_EQ(h.node(1).state(), node_state::performing_task);
+  EXPECT_EQ(h.node(1).role(), group_role::leader);
+  EXPECT_EQ(h.count("left_task", 1), 0u);
+  EXPECT_EQ(h.count("leader_changed", 1), 1u) << "it took the group back";
 }
 
 // Two leaders of one task (as after a leader's crash is wrongly presumed): the groups merge.
