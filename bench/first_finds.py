@@ -23,8 +23,8 @@ import statistics
 import sys
 
 
-def visible_targets(run):
-    """(camera, tick) -> {pedestrian: visibility} from the MOT ground truth."""
+def ground_truth_boxes(run):
+    """(camera, tick) -> {pedestrian: (box height, visibility)} from the MOT ground truth."""
     seen = collections.defaultdict(dict)
     pattern = os.path.join(run, "mot/gt/mot_challenge/ARGUS-all/cam*/gt/gt.txt")
     files = glob.glob(pattern)
@@ -34,9 +34,15 @@ def visible_targets(run):
         camera = int(path.split("/cam")[-1].split("/")[0])
         with open(path) as f:
             for line in f:
-                frame, pedestrian, *_, visibility = line.strip().split(",")[:9]
-                seen[(camera, int(frame) - 1)][int(pedestrian)] = float(visibility)
+                p = line.strip().split(",")
+                seen[(camera, int(p[0]) - 1)][int(p[1])] = (float(p[5]), float(p[8]))
     return seen
+
+
+def visible_targets(run):
+    """(camera, tick) -> {pedestrian: visibility} from the MOT ground truth."""
+    return {key: {who: v for who, (_, v) in people.items()}
+            for key, people in ground_truth_boxes(run).items()}
 
 
 def track_starts(run):

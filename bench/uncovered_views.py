@@ -13,30 +13,15 @@ other cameras' frames where only they had her.
 """
 import collections
 import csv
-import glob
 import os
 import statistics
 import sys
 
-
-def ground_truth(run):
-    """(camera, tick) -> {pedestrian: (box height, visibility)} from the MOT ground truth."""
-    seen = collections.defaultdict(dict)
-    pattern = os.path.join(run, "mot/gt/mot_challenge/ARGUS-all/cam*/gt/gt.txt")
-    files = glob.glob(pattern)
-    if not files:
-        sys.exit(f"{run}: no MOT ground truth ({pattern}); run argus with --mot")
-    for path in files:
-        camera = int(path.split("/cam")[-1].split("/")[0])
-        with open(path) as f:
-            for line in f:
-                p = line.strip().split(",")
-                seen[(camera, int(p[0]) - 1)][int(p[1])] = (float(p[5]), float(p[8]))
-    return seen
+from first_finds import ground_truth_boxes
 
 
 def classify(run, heights_member, heights_other):
-    gt = ground_truth(run)
+    gt = ground_truth_boxes(run)
     cameras = {c for c, _ in gt}
     members = collections.defaultdict(dict)
     with open(os.path.join(run, "tracks.csv")) as f:
