@@ -307,6 +307,12 @@ struct controller_settings {
   seconds bid_evidence_time{0.0};
   double bid_min_found_fraction = 0.0;
   double bid_min_mean_score = 0.0;
+  /// Fig. 10 embeds the child FSM (track / wait / search) in ComputingRelevance as well: a free
+  /// node that found the target while bidding fixates and zooms on her, and keeps doing so after
+  /// its bid until the join could have come (auction_window + the message timeout), so that it
+  /// joins with her in view and large. false, the default: the node holds its pose while
+  /// bidding and stops looking once it has bid, as this simulator did first.
+  bool track_while_bidding = false;
   /// Fig. 15's "random interval": uniform in [0, this].
   seconds demotion_backoff_max{1.0};
   friend bool operator==(const controller_settings&, const controller_settings&) = default;

@@ -77,7 +77,7 @@ constexpr std::array<std::string_view, 13> network_keys{"loss_probability",
                                                         "hello_interval",
                                                         "neighbour_timeout",
                                                         "unicast"};
-constexpr std::array<std::string_view, 25> controller_keys{"wait_timeout",
+constexpr std::array<std::string_view, 26> controller_keys{"wait_timeout",
                                                            "search_timeout",
                                                            "min_relevance",
                                                            "heartbeat_interval",
@@ -101,6 +101,7 @@ constexpr std::array<std::string_view, 25> controller_keys{"wait_timeout",
                                                            "bid_evidence_time",
                                                            "bid_min_found_fraction",
                                                            "bid_min_mean_score",
+                                                           "track_while_bidding",
                                                            "demotion_backoff_max"};
 constexpr std::array<std::string_view, 8> task_keys{
     "at",     "pedestrian",     "pixel",       "first_to_enter",
@@ -459,6 +460,7 @@ class scenario_parser {
     controller.read("bid_evidence_time", out.bid_evidence_time, non_negative);
     controller.read("bid_min_found_fraction", out.bid_min_found_fraction, probability);
     controller.read("bid_min_mean_score", out.bid_min_mean_score, probability);
+    controller.read("track_while_bidding", out.track_while_bidding);
     controller.read("demotion_backoff_max", out.demotion_backoff_max, non_negative);
   }
 

@@ -251,6 +251,7 @@ std::string to_yaml(const scenario& s) {
   out.entry(1, "bid_evidence_time", duration(controller.bid_evidence_time));
   out.entry(1, "bid_min_found_fraction", number(controller.bid_min_found_fraction));
   out.entry(1, "bid_min_mean_score", number(controller.bid_min_mean_score));
+  out.entry(1, "track_while_bidding", boolean(controller.track_while_bidding));
   out.entry(1, "demotion_backoff_max", duration(controller.demotion_backoff_max));
 
   out.line(0, "sensing:");

@@ -39,6 +39,12 @@ std::string_view name_of(vision::tracking_state s) {
   return "track";
 }
 
+vision::tracking_fsm_settings fsm_settings(const config::controller_settings& controller) {
+  vision::tracking_fsm_settings t;
+  if (!controller.zoom_in_track) t.fixate.zoom_gain = 0.0;
+  return t;
+}
+
 }  // namespace
 
 node_identity node_identity::from(const config::camera_settings& camera) {
@@ -68,17 +74,13 @@ camera_controller::camera_controller(node_identity me, const config::scenario& s
       settings_(scenario.controller),
       tick_(scenario.run.tick),
       message_timeout_(scenario.network.message_timeout),
-      fsm_(me_.limits, scenario.controller,
-           [&] {
-             vision::tracking_fsm_settings t;
-             if (!scenario.controller.zoom_in_track) t.fixate.zoom_gain = 0.0;
-             return t;
-           }()),
+      fsm_(me_.limits, scenario.controller, fsm_settings(scenario.controller)),
       negotiator_(config::to_ticks(settings_.merge_timeout, tick_),
                   config::to_ticks(settings_.demotion_backoff_max, tick_),
                   config::derive_seed(scenario.run.seed,
                                       negotiation_stream ^ static_cast<std::uint64_t>(me_.id))),
-      pose_(me_.home) {
+      pose_(me_.home),
+      bid_fsm_(me_.limits, scenario.controller, fsm_settings(scenario.controller)) {
   // nop
 }
 
@@ -159,6 +161,7 @@ controller_output camera_controller::step(const controller_input& in) {
 
 void camera_controller::take_looks(const controller_input& in, controller_output& out) {
   seen_now_.reset();
+  bid_seen_.reset();
   for (const auto& r : in.looks) {
     if (task_ && r.task == task_->task) {
       seen_now_ = r;
@@ -167,8 +170,17 @@ void camera_controller::take_looks(const controller_input& in, controller_output
         seen_tick_ = now_;
       }
     }
-    for (auto& p : pending_)
-      if (p.task.task == r.task && !p.bid_sent && !p.unconfirmed) weigh_evidence(p, r, out);
+    for (auto& p : pending_) {
+      if (p.task.task != r.task) continue;
+      if (!p.bid_sent && !p.unconfirmed) {
+        weigh_evidence(p, r, out);
+      } else if (p.bid_sent && r.found) {
+        // Followed after its bid (track_while_bidding): it joins with what it sees last.
+        p.relevance = relevance_of(r.box, false);
+        p.seen_tick = now_;
+      }
+    }
+    if (bid_followed_ && r.task == *bid_followed_) bid_seen_ = r;
   }
 }
 
@@ -215,6 +227,7 @@ void camera_controller::weigh_evidence(pending_query& p, const look_result& r,
   }
   send(p.querier, bid, out);
   p.bid_sent = true;
+  p.bid_at = now_;
   emit(out, "bid",
        fmt::format(R"("task":{},"leader":{},"auction":{},"relevance":{:.4f},"busy":{},)"
                    R"("found_fraction":{:.3f},"mean_score":{:.4f})",
@@ -355,7 +368,9 @@ void camera_controller::on_join(int from, const protocol::join& j, controller_ou
     seen = p.seen_tick;
   }
   pending_.clear();
+  const bool followed = bid_followed_ == j.task.task;
   start_task(j.task, group_role::member, j.leader, r, seen, out);
+  if (followed) fsm_ = bid_fsm_;  // in Track (or Wait) on her already
   emit(out, "joined",
        fmt::format(R"("task":{},"leader":{},"reassign":{})", j.task.task, j.leader, j.reassign));
   send(protocol::broadcast, own_status(), out);
@@ -920,16 +935,52 @@ void camera_controller::apply_assignment(const std::vector<int>& cameras, contro
 
 // --- the next frame --------------------------------------------------------------------------
 
+const camera_controller::pending_query* camera_controller::followed_query() const {
+  if (!settings_.track_while_bidding || task_) return nullptr;
+  // Until the join could have come: the auction closes within its window of the query, and
+  // the join takes up to a message timeout to arrive.
+  const auto wait = ticks(settings_.auction_window) + ticks(message_timeout_);
+  for (const auto& p : pending_) {
+    if (!p.first_found || p.unconfirmed) continue;
+    if (p.bid_sent ? now_ - p.bid_at <= wait : now_ < p.look_until) return &p;
+  }
+  return nullptr;
+}
+
+bool camera_controller::follow_find(controller_output& out) {
+  const auto* p = followed_query();
+  if (p == nullptr) {
+    bid_followed_.reset();
+    return false;
+  }
+  if (bid_followed_ != p->task.task) {
+    bid_fsm_.reset();
+    bid_followed_ = p->task.task;
+  }
+  if (bid_seen_) {
+    vision::track_observation obs;
+    obs.found = bid_seen_->found;
+    obs.box = cv::Rect(bid_seen_->box);
+    obs.score = bid_seen_->score;
+    out.command = bid_fsm_.step(obs, pose_, me_.frame, tick_).pose;
+  }
+  return true;
+}
+
 void camera_controller::plan_next(controller_output& out) {
   if (task_) out.looks.push_back(look_request{task_->task, task_->target});
+  const bool following = follow_find(out);
   for (const auto& p : pending_) {
-    if (p.bid_sent || now_ >= p.look_until) continue;
+    const bool followed = following && bid_followed_ == p.task.task;
+    if (!followed && (p.bid_sent || now_ >= p.look_until)) continue;
     const bool asked = std::any_of(out.looks.begin(), out.looks.end(),
                                    [&](const look_request& l) { return l.task == p.task.task; });
     if (!asked) out.looks.push_back(look_request{p.task.task, p.task.target});
   }
-  // Section III-C: a camera with no task returns to its default pose (the reset routine).
-  if (!task_ && pending_.empty() && !(pose_ == me_.home)) out.command = me_.home;
+  // Section III-C: a camera with no task returns to its default pose (the reset routine); one
+  // that follows a find while bidding, or looks for one, returns once it no longer does.
+  const bool holds = settings_.track_while_bidding ? following : !pending_.empty();
+  if (!task_ && !holds && !(pose_ == me_.home)) out.command = me_.home;
 }
 
 }  // namespace argus::controller

@@ -87,6 +87,7 @@ class camera_controller {
     int found = 0;
     double score_sum = 0.0;
     bool unconfirmed = false;
+    std::int64_t bid_at = 0;
   };
   struct member_record {
     double relevance = 0.0;
@@ -125,6 +126,10 @@ class camera_controller {
   void lead(controller_output& out);
   void follow(controller_output& out);
   void plan_next(controller_output& out);
+  // controller.track_while_bidding: the query whose find a free node follows with its head now,
+  // if any, and the child FSM step that follows it.
+  const pending_query* followed_query() const;
+  bool follow_find(controller_output& out);
 
   // Transitions.
   void start_task(const protocol::task_description& task, group_role role, int leader,
@@ -172,6 +177,11 @@ class camera_controller {
   node_state reported_state_ = node_state::idle;
 
   std::vector<pending_query> pending_;
+  // controller.track_while_bidding: the child FSM of ComputingRelevance (Fig. 10), the task
+  // whose find it follows, and what the sensor saw of that task in this frame.
+  vision::tracking_fsm bid_fsm_;
+  std::optional<task_id> bid_followed_;
+  std::optional<look_result> bid_seen_;
   // The task performed (performing_task), with the node's part in its group.
   std::optional<protocol::task_description> task_;
   group_role role_ = group_role::member;

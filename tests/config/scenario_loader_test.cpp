@@ -300,10 +300,14 @@ TEST(scenario_loader, trackers_know_no_poses_and_cameras_zoom_in_track_unless_to
   const auto paper = parse_scenario("name: a\n", "a.yaml");
   EXPECT_FALSE(paper.sensing.ego_motion);
   EXPECT_TRUE(paper.controller.zoom_in_track);
-  const auto ours =
-      parse_scenario("sensing: {ego_motion: true}\ncontroller: {zoom_in_track: false}\n", "a.yaml");
+  EXPECT_FALSE(paper.controller.track_while_bidding);
+  const auto ours = parse_scenario(
+      "sensing: {ego_motion: true}\ncontroller: {zoom_in_track: false, track_while_bidding: "
+      "true}\n",
+      "a.yaml");
   EXPECT_TRUE(ours.sensing.ego_motion);
   EXPECT_FALSE(ours.controller.zoom_in_track);
+  EXPECT_TRUE(ours.controller.track_while_bidding);
 }
 
 // The pixel trackers' reacquisition and model: the paper's unless told.

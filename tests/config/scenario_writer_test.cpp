@@ -99,6 +99,7 @@ TEST(scenario_writer, round_trips_awkward_values_exactly) {
   original.controller.bid_min_found_fraction = 0.6;
   original.controller.bid_min_mean_score = 0.5;
   original.controller.zoom_in_track = false;
+  original.controller.track_while_bidding = true;
   expect_same(round_trip(original), original);
 }
 
