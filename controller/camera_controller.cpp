@@ -39,6 +39,15 @@ std::string_view name_of(vision::tracking_state s) {
   return "track";
 }
 
+// What the child FSM takes of a look.
+vision::track_observation observation_of(const look_result& r) {
+  vision::track_observation obs;
+  obs.found = r.found;
+  obs.box = cv::Rect(r.box);
+  obs.score = r.score;
+  return obs;
+}
+
 vision::tracking_fsm_settings fsm_settings(const config::controller_settings& controller) {
   vision::tracking_fsm_settings t;
   if (!controller.zoom_in_track) t.fixate.zoom_gain = 0.0;
@@ -626,12 +635,8 @@ void camera_controller::run_timers(controller_output& out) {
   }
   if (!task_) return;
   if (seen_now_) {
-    vision::track_observation obs;
-    obs.found = seen_now_->found;
-    obs.box = cv::Rect(seen_now_->box);
-    obs.score = seen_now_->score;
     const auto before = fsm_.state();
-    const auto cmd = fsm_.step(obs, pose_, me_.frame, tick_);
+    const auto cmd = fsm_.step(observation_of(*seen_now_), pose_, me_.frame, tick_);
     out.command = cmd.pose;
     if (cmd.state != before)
       emit(out, "tracking",
@@ -957,13 +962,8 @@ bool camera_controller::follow_find(controller_output& out) {
     bid_fsm_.reset();
     bid_followed_ = p->task.task;
   }
-  if (bid_seen_) {
-    vision::track_observation obs;
-    obs.found = bid_seen_->found;
-    obs.box = cv::Rect(bid_seen_->box);
-    obs.score = bid_seen_->score;
-    out.command = bid_fsm_.step(obs, pose_, me_.frame, tick_).pose;
-  }
+  if (bid_seen_)
+    out.command = bid_fsm_.step(observation_of(*bid_seen_), pose_, me_.frame, tick_).pose;
   return true;
 }
 
@@ -971,7 +971,8 @@ void camera_controller::plan_next(controller_output& out) {
   if (task_) out.looks.push_back(look_request{task_->task, task_->target});
   const bool following = follow_find(out);
   for (const auto& p : pending_) {
-    const bool followed = following && bid_followed_ == p.task.task;
+    // follow_find() leaves bid_followed_ set only while it follows.
+    const bool followed = bid_followed_ == p.task.task;
     if (!followed && (p.bid_sent || now_ >= p.look_until)) continue;
     const bool asked = std::any_of(out.looks.begin(), out.looks.end(),
                                    [&](const look_request& l) { return l.task == p.task.task; });
