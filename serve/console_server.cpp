@@ -14,14 +14,20 @@
 namespace argus::serve {
 namespace {
 
+// Replies can echo what a client sent (a path, a field), which need not be UTF-8: such bytes are
+// replaced, since a throwing dump() in a handler would end the whole run.
+std::string json_text(const nlohmann::json& j) {
+  return j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
 void reply_error(httplib::Response& res, int status, const std::string& message) {
   res.status = status;
-  res.set_content(nlohmann::json{{"error", message}}.dump(), "application/json");
+  res.set_content(json_text({{"error", message}}), "application/json");
 }
 
 void reply_json(httplib::Response& res, const nlohmann::json& j, int status = 200) {
   res.status = status;
-  res.set_content(j.dump(), "application/json");
+  res.set_content(json_text(j), "application/json");
   res.set_header("Cache-Control", "no-store");
 }
 
@@ -50,7 +56,7 @@ std::string plan_description(const config::scenario& scenario, const world::stat
                        {"height_px", c.imaging.height_px}});
   j["links"] = protocol::topology(scenario).links();
   j["scenario"] = scenario.name;
-  return j.dump();
+  return json_text(j);
 }
 
 }  // namespace
@@ -107,7 +113,7 @@ void console_server::routes() {
           auto j = session_->console.state_json();
           j["speed"] = session_->pace.speed();
           j["paused"] = session_->pace.paused();
-          const auto message = "data: " + j.dump() + "\n\n";
+          const auto message = "data: " + json_text(j) + "\n\n";
           if (!sink.is_writable() || !sink.write(message.data(), message.size())) return false;
           std::this_thread::sleep_for(settings_.stream_interval);
           return !stopping_.load();
@@ -190,9 +196,8 @@ void console_server::routes() {
     const char* what = res.status == 404   ? "not found"
                        : res.status == 413 ? "request body too large (at most 16 KiB)"
                                            : "bad request";
-    res.set_content(
-        nlohmann::json{{"error", fmt::format("{} {}: {}", req.method, req.path, what)}}.dump(),
-        "application/json");
+    res.set_content(json_text({{"error", fmt::format("{} {}: {}", req.method, req.path, what)}}),
+                    "application/json");
   });
 }
 

@@ -70,6 +70,21 @@ def is_valid(serve_url, body):
     return type(j.get("camera")) is int and j["camera"] in (1, 2, 3, 4, 5, 6, 12)
 
 
+def raw_request(url, request):
+    """(status, body) of one request sent byte for byte, as no HTTP library would send it."""
+    host, port = url.split("//")[1].split(":")
+    with socket.create_connection((host, int(port)), timeout=10) as s:
+        s.sendall(request)
+        reply = b""
+        while b"\r\n\r\n" not in reply or not reply.rstrip().endswith(b"}"):
+            chunk = s.recv(4096)
+            if not chunk:
+                break
+            reply += chunk
+    head, _, body = reply.partition(b"\r\n\r\n")
+    return int(head.split(b" ")[1]), body
+
+
 def drop_clients(url, count):
     host, port = url.split("//")[1].split(":")
     errors = []
@@ -121,6 +136,10 @@ def main(argus, scenario, out):
         assert status == 404 and "camera 99" in reply["error"], (status, reply)
         status, _ = serve.request("GET", "/no/such/page")
         assert status == 404
+        # A path that is not UTF-8 is echoed in the error: the server once died writing it.
+        for path in (b"/\xff\xfe", b"/feed/\xc3.jpg", b"/x\x80y"):
+            status, body = raw_request(serve.url, b"GET " + path + b" HTTP/1.1\r\nHost: x\r\n\r\n")
+            assert status == 404 and json.loads(body)["error"], (path, status, body)
         print("fuzz: %d bad commands refused with HTTP 400 and a message" % refused)
         before = serve.state()["tick"]
         errors = drop_clients(serve.url, 100)
