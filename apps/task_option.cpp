@@ -8,6 +8,7 @@
 
 #include "CLI/CLI.hpp"
 #include "config/scenario_loader.hpp"
+#include "config/utf8_text.hpp"
 #include "fmt/format.h"
 #include "fmt/ranges.h"
 
@@ -19,6 +20,10 @@ constexpr std::array<std::string_view, 8> task_keys{
     "max_cameras", "cancel_at"};
 
 YAML::Node task_node(const std::string& text) {
+  if (const auto bad = config::first_non_utf8(text))
+    throw CLI::ValidationError(
+        "--task", fmt::format("expected UTF-8 text, got the byte 0x{:02X} at byte {} of '{}'",
+                              bad->byte, bad->column, text));
   YAML::Node node(YAML::NodeType::Map);
   std::stringstream in(text);
   std::string pair;

@@ -12,6 +12,7 @@
 #include <memory>
 
 #include "config/mapping_reader.hpp"
+#include "config/utf8_text.hpp"
 #include "config/yaml_override.hpp"
 #include "config/yaml_reader.hpp"
 
@@ -633,6 +634,8 @@ scenario parse_scenario(std::string_view yaml_text, const std::string& source_na
 
 scenario parse_scenario(std::string_view yaml_text, const std::string& source_name,
                         std::span<const field_override> overrides) {
+  if (const auto bad = first_non_utf8(yaml_text))
+    throw scenario_error({not_utf8(source_name, *bad)});
   std::vector<YAML::Node> documents;
   try {
     documents = YAML::LoadAll(std::string{yaml_text});
@@ -656,6 +659,14 @@ scenario parse_scenario(std::string_view yaml_text, const std::string& source_na
   out.source_path = source_name;
   yaml_reader reader(source_name);
   scenario_parser(reader).parse(document, out);
+  // The name goes into every JSON output, which holds only UTF-8; a `name:` in the file was
+  // checked with the file's text, a name taken from the file's own name was not.
+  if (const auto bad = first_non_utf8(out.name)) {
+    reader.report(YAML::Mark::null_mark(), "name",
+                  fmt::format("the scenario has no name: and its file name is not UTF-8 text "
+                              "(byte 0x{:02X}); give it a name:",
+                              bad->byte));
+  }
   if (!reader.problems().empty()) throw scenario_error(reader.take_problems());
   return out;
 }

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "config/scenario_error.hpp"
+#include "config/utf8_text.hpp"
 
 namespace argus::config {
 
@@ -58,6 +59,12 @@ YAML::Node without_marks(const YAML::Node& node) {
 }
 
 void apply(YAML::Node& document, const field_override& o, const std::string& source_name) {
+  for (const auto& text : {o.path, o.value}) {
+    if (const auto bad = first_non_utf8(text))
+      reject(source_name, o,
+             fmt::format("expected UTF-8 text, got the byte 0x{:02X} at byte {}", bad->byte,
+                         bad->column));
+  }
   YAML::Node value;
   try {
     value = without_marks(YAML::Load(o.value));

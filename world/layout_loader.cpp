@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "config/mapping_reader.hpp"
+#include "config/utf8_text.hpp"
 #include "config/yaml_reader.hpp"
 
 namespace argus::world {
@@ -383,6 +384,8 @@ class layout_parser {
 }  // namespace
 
 layout parse_layout(std::string_view yaml_text, const std::string& source_name) {
+  if (const auto bad = config::first_non_utf8(yaml_text))
+    throw scenario_error({config::not_utf8(source_name, *bad)});
   std::vector<YAML::Node> documents;
   try {
     documents = YAML::LoadAll(std::string{yaml_text});
