@@ -1,6 +1,7 @@
 #include "report/sweep_grid.hpp"
 
 #include <cctype>
+#include <cstdint>
 #include <set>
 
 #include "config/field_override.hpp"
@@ -56,6 +57,21 @@ std::optional<swept_parameter> parse_swept_parameter(std::string_view text) {
   return out;
 }
 
+// A folder name holds at most 255 bytes; the seed and a "v2" suffix must still fit.
+constexpr std::size_t max_prefix_bytes = 200;
+
+// Many swept keys (16 cameras' fields) would overflow a folder name: the start is kept for a
+// reader and a hash of the whole (FNV-1a, the same in every process, so a resumed sweep finds
+// its runs) keeps points apart.
+std::string shortened(const std::string& prefix) {
+  std::uint64_t hash = 14695981039346656037ull;
+  for (unsigned char c : prefix) hash = (hash ^ c) * 1099511628211ull;
+  static constexpr char digits[] = "0123456789abcdef";
+  std::string hex(16, '0');
+  for (int k = 15; k >= 0; --k, hash >>= 4) hex[static_cast<std::size_t>(k)] = digits[hash & 15];
+  return prefix.substr(0, max_prefix_bytes - 20) + "h" + hex + "__";
+}
+
 std::vector<planned_run> plan_runs(const std::vector<swept_parameter>& parameters,
                                    std::uint64_t seeds) {
   std::vector<std::vector<std::string>> points{{}};
@@ -75,6 +91,7 @@ std::vector<planned_run> plan_runs(const std::vector<swept_parameter>& parameter
     std::string prefix;
     for (std::size_t k = 0; k < point.size(); ++k)
       prefix += folder_safe(names[k]) + "=" + folder_safe(point[k]) + "__";
+    if (prefix.size() > max_prefix_bytes) prefix = shortened(prefix);
     // Values that differ only in characters a folder name cannot hold ("[1, 2]", "[1,2]")
     // would share a folder: the later point is numbered.
     const std::string base = prefix;

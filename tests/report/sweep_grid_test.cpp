@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <set>
+#include <string>
+
 namespace argus::report {
 namespace {
 
@@ -37,6 +40,23 @@ TEST(sweep_grid, ids_stay_apart_when_names_or_values_collide) {
   const auto same = plan_runs({{"x", {"a b", "a_b"}}}, 1);
   EXPECT_EQ(same[0].id, "x=a_b__seed=1");
   EXPECT_EQ(same[1].id, "x=a_b__v2__seed=1");
+}
+
+TEST(sweep_grid, many_keys_make_a_folder_name_that_fits_and_stays_apart) {
+  std::vector<swept_parameter> every_camera;
+  for (int k = 0; k < 16; ++k)
+    every_camera.push_back({"cameras." + std::to_string(k) + ".field_of_view_deg", {"40"}});
+  every_camera.back().values = {"40", "45"};
+  const auto runs = plan_runs(every_camera, 1);
+  std::set<std::string> ids;
+  for (const auto& r : runs) {
+    EXPECT_LE(r.id.size(), 255u) << r.id;
+    ids.insert(r.id);
+  }
+  EXPECT_EQ(ids.size(), runs.size());
+  ASSERT_EQ(runs.size(), 2u);
+  EXPECT_EQ(plan_runs(every_camera, 1)[1].id, runs[1].id);  // a resumed sweep finds its runs
+  EXPECT_EQ(runs[0].id.substr(0, 30), "cameras.0.field_of_view_deg=40");
 }
 
 TEST(sweep_grid, no_parameters_is_one_point) {
