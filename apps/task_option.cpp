@@ -21,9 +21,8 @@ constexpr std::array<std::string_view, 8> task_keys{
 
 YAML::Node task_node(const std::string& text) {
   if (const auto bad = config::first_non_utf8(text))
-    throw CLI::ValidationError(
-        "--task", fmt::format("expected UTF-8 text, got the byte 0x{:02X} at byte {} of '{}'",
-                              bad->byte, bad->column, text));
+    throw CLI::ValidationError("--task",
+                               fmt::format("{} of '{}'", config::expected_utf8(*bad), text));
   YAML::Node node(YAML::NodeType::Map);
   std::stringstream in(text);
   std::string pair;

@@ -52,6 +52,11 @@ std::optional<utf8_break> first_non_utf8(std::string_view text) {
   return std::nullopt;
 }
 
+std::string expected_utf8(const utf8_break& where) {
+  return fmt::format("expected UTF-8 text, got the byte 0x{:02X} at byte {}", where.byte,
+                     where.column);
+}
+
 problem not_utf8(const std::string& file, const utf8_break& where) {
   return problem{file,
                  where.line,

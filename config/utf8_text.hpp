@@ -20,6 +20,9 @@ struct utf8_break {
 /// text, and a name read from a file ends up in JSON outputs that cannot hold anything else.
 std::optional<utf8_break> first_non_utf8(std::string_view text);
 
+/// "expected UTF-8 text, got the byte 0xBB at byte N": for a one-line text (an option's value).
+std::string expected_utf8(const utf8_break& where);
+
 /// The problem to report for `file` whose text breaks off at `where`.
 problem not_utf8(const std::string& file, const utf8_break& where);
 

@@ -60,10 +60,7 @@ YAML::Node without_marks(const YAML::Node& node) {
 
 void apply(YAML::Node& document, const field_override& o, const std::string& source_name) {
   for (const auto& text : {o.path, o.value}) {
-    if (const auto bad = first_non_utf8(text))
-      reject(source_name, o,
-             fmt::format("expected UTF-8 text, got the byte 0x{:02X} at byte {}", bad->byte,
-                         bad->column));
+    if (const auto bad = first_non_utf8(text)) reject(source_name, o, expected_utf8(*bad));
   }
   YAML::Node value;
   try {

@@ -1,5 +1,7 @@
 #include "report/sweep_grid.hpp"
 
+#include <fmt/format.h>
+
 #include <cctype>
 #include <cstdint>
 #include <set>
@@ -66,10 +68,7 @@ constexpr std::size_t max_prefix_bytes = 200;
 std::string shortened(const std::string& prefix) {
   std::uint64_t hash = 14695981039346656037ull;
   for (unsigned char c : prefix) hash = (hash ^ c) * 1099511628211ull;
-  static constexpr char digits[] = "0123456789abcdef";
-  std::string hex(16, '0');
-  for (int k = 15; k >= 0; --k, hash >>= 4) hex[static_cast<std::size_t>(k)] = digits[hash & 15];
-  return prefix.substr(0, max_prefix_bytes - 20) + "h" + hex + "__";
+  return fmt::format("{}h{:016x}__", prefix.substr(0, max_prefix_bytes - 20), hash);
 }
 
 std::vector<planned_run> plan_runs(const std::vector<swept_parameter>& parameters,
