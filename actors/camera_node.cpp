@@ -93,6 +93,9 @@ struct camera_node_state {
   config::camera_settings settings;
   std::optional<std::uint32_t> oracle_task;
   std::map<std::uint32_t, protocol::signature> oracle_signatures;
+  // controller.oracle_signature and oracle_zoom (instruments on the oracle's lead).
+  bool oracle_operator_signature = false;
+  bool oracle_zoom = true;
 
   // The turn in progress (it may wait for a rendered frame).
   std::optional<tick_context> ctx;
@@ -230,7 +233,13 @@ void take_query(camera_node_state& st, const due_task& q, const world::snapshot*
   if (st.log)
     st.log->add_origin({q.task, r.pedestrian, st.camera_id, static_cast<std::int64_t>(snap->tick()),
                         choice_of(q.request.by)});
-  if (st.world->oracle) return;  // the oracle assigns cameras itself
+  if (st.world->oracle) {  // the oracle assigns cameras itself
+    if (st.oracle_operator_signature)
+      st.world->oracle->put_signature(
+          q.task, st.pixels ? st.pixels->acquire(q.task, image, st.head->state(), cv::Rect(*r.box))
+                            : st.emulated->acquire(q.task, *snap, r.pedestrian));
+    return;
+  }
   controller::operator_query query;
   query.task.task = q.task;
   query.task.min_cameras = static_cast<std::uint16_t>(q.request.cameras_wanted);
@@ -340,8 +349,13 @@ void follow_oracle(camera_node_state& st, const world::snapshot* snap, const cv:
   }
   const auto task = *st.oracle_task;
   const int target = st.log->target_of(task).value_or(0);
-  st.head->command(eval::oracle_pose(st.settings, *snap, target));
+  st.head->command(eval::oracle_pose(st.settings, *snap, target, st.oracle_zoom));
   auto sig = st.oracle_signatures.find(task);
+  if (sig == st.oracle_signatures.end() && st.oracle_operator_signature) {
+    auto picked = st.world->oracle->signature(task);
+    if (!picked) return;
+    sig = st.oracle_signatures.emplace(task, std::move(*picked)).first;
+  }
   if (sig == st.oracle_signatures.end()) {
     const auto box = sensing::operator_box(*snap, *st.world->station, view_of(st), target);
     if (!box || (st.pixels && image.empty())) return;
@@ -580,6 +594,9 @@ caf::behavior camera_node(node_actor* self, const config::scenario& scenario,
   if (st.world) st.log = st.world->log;
   if (st.world) {
     st.identity_from_truth = scenario.sensing.identity == config::identity_source::ground_truth;
+    st.oracle_operator_signature =
+        scenario.controller.oracle_signature_from == config::oracle_signature::operator_pick;
+    st.oracle_zoom = scenario.controller.oracle_zoom;
     if (scenario.sensing.mode == config::sensing_mode::pixels) {
       st.pixels.emplace(sensing::pixel_sensor::settings_for(scenario.sensing));
       st.imaging = vision::imaging_model::for_camera(camera.imaging, scenario.run.seed, camera.id);

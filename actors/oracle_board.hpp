@@ -9,6 +9,7 @@
 #include "config/scenario.hpp"
 #include "eval/observation_log.hpp"
 #include "eval/oracle_assignment.hpp"
+#include "protocol/group_messages.hpp"
 #include "world/snapshot.hpp"
 #include "world/station.hpp"
 
@@ -40,6 +41,20 @@ class oracle_board {
     return it->second;
   }
 
+  /// controller.oracle_signature: operator: the tasked camera leaves the signature of the
+  /// operator's pick here, in the turn it records the task's origin; the oracle assigns a task
+  /// only from the tick after its origin, so every camera finds it there, on any thread.
+  void put_signature(std::uint32_t task, protocol::signature signature) {
+    std::lock_guard<std::mutex> guard(mutex_);
+    signatures_.insert_or_assign(task, std::move(signature));
+  }
+  std::optional<protocol::signature> signature(std::uint32_t task) const {
+    std::lock_guard<std::mutex> guard(mutex_);
+    auto it = signatures_.find(task);
+    if (it == signatures_.end()) return std::nullopt;
+    return it->second;
+  }
+
  private:
   std::vector<eval::oracle_target> targets(std::int64_t tick) const {
     std::vector<eval::oracle_target> out;
@@ -53,10 +68,11 @@ class oracle_board {
   config::scenario scenario_;
   std::shared_ptr<const world::station> station_;
   std::shared_ptr<eval::observation_log> log_;
-  std::mutex mutex_;
+  mutable std::mutex mutex_;
   std::int64_t tick_ = -1;
   std::map<int, std::uint32_t> current_;
   std::map<int, std::uint32_t> previous_;
+  std::map<std::uint32_t, protocol::signature> signatures_;
 };
 
 }  // namespace argus::actors

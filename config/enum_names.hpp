@@ -98,6 +98,15 @@ struct enum_names<unicast_routing> {
   }};
 };
 
+/// Names for the oracle's `oracle_signature`.
+template <>
+struct enum_names<oracle_signature> {
+  static constexpr std::array<enum_entry<oracle_signature>, 2> entries{{
+      {oracle_signature::own_view, "own_view"},
+      {oracle_signature::operator_pick, "operator"},
+  }};
+};
+
 /// Names for the `merge` rule of the controller.
 template <>
 struct enum_names<merge_rule> {

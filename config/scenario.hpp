@@ -268,6 +268,13 @@ struct sensing_settings {
 /// no real network can reach: it knows where everyone is and needs no messages).
 enum class control_strategy { paper, no_collaboration, oracle };
 
+/// Where the central oracle's cameras take her signature from: each from its own view of her
+/// the first time it points at her (own_view, the default), or all from the operator's pick in
+/// the tasked camera, the signature the paper's protocol passes in its queries (operator).
+/// The second measures how much of the oracle's lead is a signature in each camera's own
+/// colours at her full size, rather than where it points.
+enum class oracle_signature { own_view, operator_pick };
+
 /// The camera controller and protocol (Table 2, controller and at-node parameters; eq. 1).
 struct controller_settings {
   seconds wait_timeout{120.0};
@@ -288,6 +295,12 @@ struct controller_settings {
   conflict_solver solver = conflict_solver::best_solv;
   merge_rule merge = merge_rule::highest_id;
   control_strategy strategy = control_strategy::paper;
+  /// The central oracle only (strategy: oracle): its cameras' signature, and whether they zoom
+  /// so that she is a third of the frame tall (true) or point at her with their default field
+  /// of view (false). Instruments that take the oracle's lead apart; the defaults are the
+  /// oracle as first built.
+  oracle_signature oracle_signature_from = oracle_signature::own_view;
+  bool oracle_zoom = true;
   /// In Track the camera zooms so that the target fills half the frame's height (Section
   /// III-B, "fixate and zoom"); false: it fixates only and keeps its field of view.
   bool zoom_in_track = true;

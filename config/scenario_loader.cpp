@@ -78,7 +78,7 @@ constexpr std::array<std::string_view, 13> network_keys{"loss_probability",
                                                         "hello_interval",
                                                         "neighbour_timeout",
                                                         "unicast"};
-constexpr std::array<std::string_view, 26> controller_keys{"wait_timeout",
+constexpr std::array<std::string_view, 28> controller_keys{"wait_timeout",
                                                            "search_timeout",
                                                            "min_relevance",
                                                            "heartbeat_interval",
@@ -95,6 +95,8 @@ constexpr std::array<std::string_view, 26> controller_keys{"wait_timeout",
                                                            "solver",
                                                            "merge",
                                                            "strategy",
+                                                           "oracle_signature",
+                                                           "oracle_zoom",
                                                            "zoom_in_track",
                                                            "auction_window",
                                                            "auction_interval",
@@ -454,6 +456,8 @@ class scenario_parser {
     controller.read("solver", out.solver);
     controller.read("merge", out.merge);
     controller.read("strategy", out.strategy);
+    controller.read("oracle_signature", out.oracle_signature_from);
+    controller.read("oracle_zoom", out.oracle_zoom);
     controller.read("zoom_in_track", out.zoom_in_track);
     controller.read("auction_window", out.auction_window, positive);
     controller.read("auction_interval", out.auction_interval, non_negative);

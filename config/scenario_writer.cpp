@@ -244,6 +244,8 @@ std::string to_yaml(const scenario& s) {
   out.entry(1, "solver", yaml_name(controller.solver));
   out.entry(1, "merge", yaml_name(controller.merge));
   out.entry(1, "strategy", yaml_name(controller.strategy));
+  out.entry(1, "oracle_signature", yaml_name(controller.oracle_signature_from));
+  out.entry(1, "oracle_zoom", boolean(controller.oracle_zoom));
   out.entry(1, "zoom_in_track", boolean(controller.zoom_in_track));
   out.entry(1, "auction_window", duration(controller.auction_window));
   out.entry(1, "auction_interval", duration(controller.auction_interval));

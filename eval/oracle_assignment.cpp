@@ -52,7 +52,7 @@ std::map<int, std::uint32_t> assign_cameras(const std::vector<config::camera_set
 }
 
 vision::ptz_state oracle_pose(const config::camera_settings& camera, const world::snapshot& frame,
-                              int pedestrian) {
+                              int pedestrian, bool zoom) {
   const auto limits = vision::ptz_limits::from(camera);
   vision::ptz_state home{camera.pan_deg, camera.tilt_deg, camera.field_of_view_deg};
   const auto* who = frame.find(pedestrian);
@@ -72,7 +72,8 @@ vision::ptz_state oracle_pose(const config::camera_settings& camera, const world
     const double centre = (limits.pan.min_deg + limits.pan.max_deg) / 2.0;
     pan -= 360.0 * std::round((pan - centre) / 360.0);
   }
-  vision::ptz_state wanted{pan, std::atan2(rise, ground) / deg, horizontal};
+  vision::ptz_state wanted{pan, std::atan2(rise, ground) / deg,
+                           zoom ? horizontal : camera.field_of_view_deg};
   return limits.clamp(wanted);
 }
 

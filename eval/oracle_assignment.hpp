@@ -36,7 +36,8 @@ std::map<int, std::uint32_t> assign_cameras(const std::vector<config::camera_set
 
 /// The pose that centres pedestrian `pedestrian` of `frame` in `camera`'s view with her body
 /// a third of the frame's height, within the head's limits; the home pose when she is gone.
+/// With `zoom` false, the pose centres her with the camera's default field of view.
 vision::ptz_state oracle_pose(const config::camera_settings& camera, const world::snapshot& frame,
-                              int pedestrian);
+                              int pedestrian, bool zoom = true);
 
 }  // namespace argus::eval

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -14,6 +15,7 @@
 #include <sstream>
 
 #include "actors/run_scenario.hpp"
+#include "config/enum_names.hpp"
 #include "config/scenario_loader.hpp"
 #include "eval/mot_export.hpp"
 #include "nlohmann/json.hpp"
@@ -156,6 +158,60 @@ TEST(surveillance, the_oracle_bounds_the_protocol_and_the_protocol_beats_working
   EXPECT_GT(coverage[config::control_strategy::oracle], coverage[config::control_strategy::paper]);
   EXPECT_GT(coverage[config::control_strategy::paper],
             coverage[config::control_strategy::no_collaboration]);
+}
+
+// controller.oracle_zoom: false points the oracle's cameras at her with their default field of
+// view: no camera's field of view ever leaves its default, where the oracle as first built
+// zooms every camera it assigns.
+TEST(surveillance, the_oracle_without_zoom_keeps_every_default_field_of_view) {
+  std::map<bool, int> zoomed_rows;
+  for (bool zoom : {true, false}) {
+    auto s = station(60.0, "argus_surveil_oracle_zoom");
+    s.controller.strategy = config::control_strategy::oracle;
+    s.controller.oracle_zoom = zoom;
+    const auto o = run_scenario(s, false);
+    std::map<int, double> home;
+    for (const auto& c : s.cameras) home[c.id] = c.field_of_view_deg;
+    std::ifstream poses(o.output_dir / "poses.csv");
+    std::string line;
+    std::getline(poses, line);
+    while (std::getline(poses, line)) {
+      std::vector<std::string> cells;
+      std::stringstream row(line);
+      for (std::string cell; std::getline(row, cell, ',');) cells.push_back(cell);
+      ASSERT_GE(cells.size(), 6u) << line;
+      zoomed_rows[zoom] += std::abs(std::stod(cells[5]) - home.at(std::stoi(cells[2]))) > 1e-6;
+    }
+    EXPECT_GT(o.evaluation.tasks.at(0).coverage, 0.0) << zoom;
+  }
+  EXPECT_GT(zoomed_rows[true], 0);
+  EXPECT_EQ(zoomed_rows[false], 0);
+}
+
+// controller.oracle_signature: operator gives every oracle camera the signature of the
+// operator's pick (on pixels, where a camera's own view of her differs from it): the cameras
+// still find her with it, and what they find differs from the run with their own views'.
+TEST(surveillance, the_oracle_can_look_with_the_operators_signature) {
+  std::map<config::oracle_signature, std::string> tracks;
+  for (auto from : {config::oracle_signature::own_view, config::oracle_signature::operator_pick}) {
+    auto s = config::load_scenario(std::filesystem::path(ARGUS_SOURCE_DIR) /
+                                   "scenarios/penn_station.yaml");
+    s.run.duration = config::seconds{40.0};
+    s.run.threads = 2;
+    s.run.output_dir =
+        (std::filesystem::temp_directory_path() / "argus_surveil_oracle_signature").string();
+    s.controller.strategy = config::control_strategy::oracle;
+    s.controller.oracle_signature_from = from;
+    const auto o = run_scenario(s, false);
+    EXPECT_GT(o.evaluation.tasks.at(0).coverage, 0.0) << config::yaml_name(from);
+    std::ifstream in(o.output_dir / "tracks.csv");
+    std::stringstream text;
+    text << in.rdbuf();
+    tracks[from] = text.str();
+  }
+  EXPECT_GT(tracks[config::oracle_signature::operator_pick].size(), 100u);
+  EXPECT_NE(tracks[config::oracle_signature::own_view],
+            tracks[config::oracle_signature::operator_pick]);
 }
 
 // sensing.identity: ground_truth takes away the cameras' mistakes of identity and nothing else:

@@ -310,6 +310,21 @@ TEST(scenario_loader, trackers_know_no_poses_and_cameras_zoom_in_track_unless_to
   EXPECT_TRUE(ours.controller.track_while_bidding);
 }
 
+// The oracle's instruments: the oracle as first built unless told; a bad name is refused.
+TEST(scenario_loader, the_oracle_takes_its_own_views_and_zooms_unless_told) {
+  const auto first = parse_scenario("name: a\n", "a.yaml");
+  EXPECT_EQ(first.controller.oracle_signature_from, oracle_signature::own_view);
+  EXPECT_TRUE(first.controller.oracle_zoom);
+  const auto told = parse_scenario(
+      "controller: {strategy: oracle, oracle_signature: operator, oracle_zoom: false}\n", "a.yaml");
+  EXPECT_EQ(told.controller.oracle_signature_from, oracle_signature::operator_pick);
+  EXPECT_FALSE(told.controller.oracle_zoom);
+  const auto problems =
+      problems_of([] { parse_scenario("controller: {oracle_signature: pick}\n", "b.yaml"); });
+  ASSERT_EQ(problems.size(), 1u);
+  EXPECT_EQ(problems[0].field, "controller.oracle_signature");
+}
+
 // The pixel trackers' reacquisition and model: the paper's unless told.
 TEST(scenario_loader, trackers_keep_their_signature_and_search_the_whole_frame_unless_told) {
   const auto paper = parse_scenario("name: a\n", "a.yaml");

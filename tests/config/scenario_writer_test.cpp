@@ -86,6 +86,8 @@ TEST(scenario_writer, round_trips_awkward_values_exactly) {
   by_entry.max_cameras = 3;
   original.tasks.push_back(by_entry);
   original.controller.strategy = control_strategy::oracle;
+  original.controller.oracle_signature_from = oracle_signature::operator_pick;
+  original.controller.oracle_zoom = false;
   original.sensing.ego_motion = true;
   original.sensing.signature_update = true;
   original.sensing.reacquire_margin = 0.05;
