@@ -13,6 +13,7 @@
 #include "config/ticks.hpp"
 #include "controller/camera_controller.hpp"
 #include "eval/oracle_assignment.hpp"
+#include "eval/reachability.hpp"
 #include "eval/truth_label.hpp"
 #include "fmt/format.h"
 #include "protocol/group_messages.hpp"
@@ -308,6 +309,8 @@ void record_frame(camera_node_state& st) {
       rec.truth = label.truth;
       rec.iou = label.iou;
       rec.observed = label.observed;
+      if (st.world->sightings && label.truth >= 0)
+        st.world->sightings->put(frame.tick, r.task, st.camera_id, rec.leader, label.truth);
     }
     frame.looks.push_back(rec);
   }
@@ -417,6 +420,36 @@ sensing::emulated_looks::truth_check truth_id_check(camera_node_state& st) {
   return [&st](controller::task_id task, int id) { return st.log->target_of(task) == id; };
 }
 
+// sensing.group_geometry: ground_truth (an instrument): a node that looks for a task's target
+// without holding her, bidding with nothing found yet or with its tracker in Wait or Search, is
+// pointed, zoomed, at whom its group's boxes were on in the last frame, where it can reach him.
+// Tracking, it follows its own tracker as the paper's node does.
+void aim_from_group(camera_node_state& st, const world::snapshot& frame, bool found_now) {
+  if (!st.world || !st.world->sightings) return;
+  std::optional<controller::task_id> task;
+  switch (st.controller->state()) {
+    case controller::node_state::performing_task:
+      if (st.controller->tracking() == vision::tracking_state::track) return;
+      task = st.controller->task();
+      break;
+    case controller::node_state::computing_relevance:
+      if (found_now || st.looks.empty()) return;
+      task = st.looks.front().task;
+      break;
+    case controller::node_state::idle:
+      return;
+  }
+  if (!task) return;
+  const auto tick = static_cast<std::int64_t>(frame.tick());
+  const auto who = st.world->sightings->seen(tick - 1, *task, st.camera_id);
+  if (!who) return;
+  const auto* seen = frame.find(*who);
+  if (seen == nullptr ||
+      !eval::reachable(st.settings, *st.world->station, seen->position, seen->look.height_m))
+    return;
+  st.head->command(eval::oracle_pose(st.settings, frame, *who));
+}
+
 // The second half of a turn, once the frame (if any) is there: sense, decide, act.
 void finish_turn(node_actor* self, const cv::Mat& image) {
   auto& st = self->state;
@@ -440,6 +473,8 @@ void finish_turn(node_actor* self, const cv::Mat& image) {
   if (st.world && st.world->console)
     for (const auto& look : st.input.looks)
       if (look.found) boxes.push_back(look.box);
+  const bool found_now = std::any_of(st.input.looks.begin(), st.input.looks.end(),
+                                     [](const auto& look) { return look.found; });
   auto out = st.controller->step(st.input);
   st.input = {};
   for (auto& m : out.messages) {
@@ -453,6 +488,7 @@ void finish_turn(node_actor* self, const cv::Mat& image) {
   } else {
     if (out.command) st.head->command(*out.command);
     st.looks = std::move(out.looks);
+    if (snap) aim_from_group(st, *snap, found_now);
   }
   st.head->step(st.tick_length);
   if (st.world && st.world->poses) st.world->poses->put(st.camera_id, ctx.tick(), st.head->state());

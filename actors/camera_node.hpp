@@ -7,6 +7,7 @@
 #include "actors/operator_board.hpp"
 #include "actors/oracle_board.hpp"
 #include "actors/participant_info.hpp"
+#include "actors/sighting_board.hpp"
 #include "actors/snapshot_board.hpp"
 #include "caf/actor.hpp"
 #include "caf/fwd.hpp"
@@ -41,6 +42,8 @@ struct camera_world {
   std::shared_ptr<eval::observation_log> log;
   /// The central oracle's orders (control_strategy::oracle only).
   std::shared_ptr<oracle_board> oracle;
+  /// Whom group members' boxes were on (sensing.group_geometry: ground_truth only).
+  std::shared_ptr<sighting_board> sightings;
   /// The operator's live tasks and cancellations (argus serve); null for none.
   std::shared_ptr<operator_board> operators;
   /// Where nodes show the live console their pose, frame and traffic (display only; null for

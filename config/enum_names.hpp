@@ -98,6 +98,15 @@ struct enum_names<unicast_routing> {
   }};
 };
 
+/// Names for the sensing `group_geometry`.
+template <>
+struct enum_names<group_geometry> {
+  static constexpr std::array<enum_entry<group_geometry>, 2> entries{{
+      {group_geometry::none, "none"},
+      {group_geometry::ground_truth, "ground_truth"},
+  }};
+};
+
 /// Names for the oracle's `oracle_signature`.
 template <>
 struct enum_names<oracle_signature> {

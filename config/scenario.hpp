@@ -217,6 +217,17 @@ enum class tracker_scales { target, paper };
 /// sensing; only their mistakes of identity are taken away.
 enum class identity_source { appearance, ground_truth };
 
+/// What a node knows of how the other cameras' views map onto its own (sensing.group_geometry).
+/// none, the paper's: nothing (no calibration, no world model; a query carries only her
+/// signature). ground_truth: an instrument standing in for a perfectly learned map between
+/// views (a ground-plane homography learned from co-observations would give it): a node that
+/// looks for a task's target without holding her (bidding, or its tracker in Wait or Search)
+/// is pointed, zoomed, at the pedestrian a group member's box was on in the last frame (the
+/// leader's first), if it can reach him. Whom the boxes are on is the evaluation's label, so a
+/// group that follows a stranger points its cameras at the stranger; identity stays each
+/// camera's own.
+enum class group_geometry { none, ground_truth };
+
 /// How camera nodes sense (Section III-A, B).
 struct sensing_settings {
   sensing_mode mode = sensing_mode::pixels;
@@ -259,6 +270,8 @@ struct sensing_settings {
   double track_rho = 0.4;
   /// Whom a find is taken for (identity_source); appearance, the default, is the paper's.
   identity_source identity = identity_source::appearance;
+  /// What a node knows of the other cameras' views (group_geometry); none is the paper's.
+  group_geometry geometry = group_geometry::none;
   friend bool operator==(const sensing_settings&, const sensing_settings&) = default;
 };
 

@@ -196,7 +196,7 @@ TEST(surveillance, the_oracle_can_look_with_the_operators_signature) {
   for (auto from : {config::oracle_signature::own_view, config::oracle_signature::operator_pick}) {
     auto s = config::load_scenario(std::filesystem::path(ARGUS_SOURCE_DIR) /
                                    "scenarios/penn_station.yaml");
-    s.run.duration = config::seconds{40.0};
+    s.run.duration = config::seconds{30.0};
     s.run.threads = 2;
     s.run.output_dir =
         (std::filesystem::temp_directory_path() / "argus_surveil_oracle_signature").string();
@@ -212,6 +212,51 @@ TEST(surveillance, the_oracle_can_look_with_the_operators_signature) {
   EXPECT_GT(tracks[config::oracle_signature::operator_pick].size(), 100u);
   EXPECT_NE(tracks[config::oracle_signature::own_view],
             tracks[config::oracle_signature::operator_pick]);
+}
+
+// How many times a queried camera zoomed in while bidding (state computing_relevance, field of
+// view below its default) within 1 s of the query, from the run's events and poses.csv.
+int bidders_that_zoomed(const run_outcome& o, const config::scenario& s) {
+  std::map<int, double> home;
+  for (const auto& c : s.cameras) home[c.id] = c.field_of_view_deg;
+  std::multimap<int, double> queried;  // camera -> when
+  for (const auto& e : events_of(o))
+    if (e["kind"] == "queried") queried.emplace(e["camera"].get<int>(), e["t"].get<double>());
+  std::ifstream poses(o.output_dir / "poses.csv");
+  std::string line;
+  std::getline(poses, line);
+  std::set<std::pair<int, double>> zoomed;
+  while (std::getline(poses, line)) {
+    std::vector<std::string> cells;
+    std::stringstream row(line);
+    for (std::string cell; std::getline(row, cell, ',');) cells.push_back(cell);
+    if (cells.size() < 7 || cells[6] != "computing_relevance") continue;
+    const int camera = std::stoi(cells[2]);
+    const double t = std::stod(cells[1]);
+    if (std::stod(cells[5]) >= home.at(camera) - 1e-6) continue;
+    auto [first, last] = queried.equal_range(camera);
+    for (auto it = first; it != last; ++it)
+      if (t > it->second && t <= it->second + 1.0) zoomed.insert({camera, it->second});
+  }
+  return static_cast<int>(zoomed.size());
+}
+
+// sensing.group_geometry: ground_truth: a queried camera that has not found her is pointed and
+// zoomed where the group sees her, where the paper's holds its pose while it looks; and the run
+// stays the same whatever the thread count (nodes read only the last frame's sightings).
+TEST(surveillance, with_the_groups_geometry_bidders_turn_to_where_the_group_sees_her) {
+  auto paper = station(90.0, "argus_surveil_geometry");
+  const auto held = run_scenario(paper, false);
+  EXPECT_EQ(bidders_that_zoomed(held, paper), 0);
+  auto s = paper;
+  s.sensing.geometry = config::group_geometry::ground_truth;
+  const auto aimed = run_scenario(s, false);
+  EXPECT_GT(bidders_that_zoomed(aimed, s), 0);
+  const auto reference = events_of(aimed);
+  for (unsigned threads : {1u, 4u}) {
+    s.run.threads = threads;
+    EXPECT_EQ(events_of(run_scenario(s, false)), reference) << threads << " threads";
+  }
 }
 
 // sensing.identity: ground_truth takes away the cameras' mistakes of identity and nothing else:

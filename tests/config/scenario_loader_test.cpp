@@ -325,6 +325,17 @@ TEST(scenario_loader, the_oracle_takes_its_own_views_and_zooms_unless_told) {
   EXPECT_EQ(problems[0].field, "controller.oracle_signature");
 }
 
+// What a node knows of the other cameras' views: nothing, the paper's, unless told.
+TEST(scenario_loader, nodes_know_nothing_of_each_others_views_unless_told) {
+  EXPECT_EQ(parse_scenario("name: a\n", "a.yaml").sensing.geometry, group_geometry::none);
+  EXPECT_EQ(parse_scenario("sensing: {group_geometry: ground_truth}\n", "a.yaml").sensing.geometry,
+            group_geometry::ground_truth);
+  const auto problems =
+      problems_of([] { parse_scenario("sensing: {group_geometry: learned}\n", "b.yaml"); });
+  ASSERT_EQ(problems.size(), 1u);
+  EXPECT_EQ(problems[0].field, "sensing.group_geometry");
+}
+
 // The pixel trackers' reacquisition and model: the paper's unless told.
 TEST(scenario_loader, trackers_keep_their_signature_and_search_the_whole_frame_unless_told) {
   const auto paper = parse_scenario("name: a\n", "a.yaml");

@@ -1,0 +1,38 @@
+// sensing.group_geometry: ground_truth points a node where its group saw her in the last frame.
+// Whom it is pointed at must not depend on which cameras have taken their turn of this tick.
+
+#include "actors/sighting_board.hpp"
+
+#include <gtest/gtest.h>
+
+namespace argus::actors {
+namespace {
+
+TEST(sighting_board, the_leaders_box_comes_first_then_the_lowest_numbered_members) {
+  sighting_board board;
+  board.put(10, 0, 9, false, 41);
+  board.put(10, 0, 4, false, 42);
+  EXPECT_EQ(board.seen(10, 0, 0), 42);  // no leader's box: the lowest-numbered member's
+  board.put(10, 0, 12, true, 43);
+  EXPECT_EQ(board.seen(10, 0, 0), 43);             // the leader's
+  EXPECT_EQ(board.seen(10, 0, 12), 42);            // but never the asking camera's own
+  EXPECT_FALSE(board.seen(10, 1, 0).has_value());  // another task's group saw nobody
+  EXPECT_FALSE(board.seen(9, 0, 0).has_value());   // nor did this group a frame earlier
+}
+
+TEST(sighting_board, what_a_node_reads_of_the_last_frame_stays_while_this_one_is_written) {
+  sighting_board board;
+  board.put(20, 3, 5, true, 7);
+  // Tick 21: some cameras write their frame before others read the frame of tick 20.
+  board.put(21, 3, 5, true, 8);
+  board.put(21, 3, 6, false, 9);
+  EXPECT_EQ(board.seen(20, 3, 1), 7);
+  EXPECT_EQ(board.seen(21, 3, 1), 8);
+  // Frames nobody can read any more go: at tick 23, the frame of 20.
+  board.put(23, 3, 5, true, 10);
+  EXPECT_FALSE(board.seen(20, 3, 1).has_value());
+  EXPECT_EQ(board.seen(21, 3, 1), 8);
+}
+
+}  // namespace
+}  // namespace argus::actors
