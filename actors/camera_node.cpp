@@ -97,6 +97,9 @@ struct camera_node_state {
   // controller.oracle_signature and oracle_zoom (instruments on the oracle's lead).
   bool oracle_operator_signature = false;
   bool oracle_zoom = true;
+  // sensing.group_geometry and sensing.reappearance: ground_truth (instruments).
+  bool geometry_hints = false;
+  bool reappearance_hints = false;
 
   // The turn in progress (it may wait for a rendered frame).
   std::optional<tick_context> ctx;
@@ -420,10 +423,12 @@ sensing::emulated_looks::truth_check truth_id_check(camera_node_state& st) {
   return [&st](controller::task_id task, int id) { return st.log->target_of(task) == id; };
 }
 
-// sensing.group_geometry: ground_truth (an instrument): a node that looks for a task's target
-// without holding her, bidding with nothing found yet or with its tracker in Wait or Search, is
-// pointed, zoomed, at whom its group's boxes were on in the last frame, where it can reach him.
-// Tracking, it follows its own tracker as the paper's node does.
+// sensing.group_geometry and sensing.reappearance: ground_truth (instruments): a node that looks
+// for a task's target without holding her, bidding with nothing found yet or with its tracker in
+// Wait or Search, is pointed, zoomed, at whom its group's boxes were on in the last frame (the
+// geometry), or at her true position when no camera of the group held anyone then (the
+// reappearance), where it can reach him. Tracking, it follows its own tracker as the paper's
+// node does.
 void aim_from_group(camera_node_state& st, const world::snapshot& frame, bool found_now) {
   if (!st.world || !st.world->sightings) return;
   std::optional<controller::task_id> task;
@@ -440,8 +445,9 @@ void aim_from_group(camera_node_state& st, const world::snapshot& frame, bool fo
       return;
   }
   if (!task) return;
-  const auto tick = static_cast<std::int64_t>(frame.tick());
-  const auto who = st.world->sightings->seen(tick - 1, *task, st.camera_id);
+  const auto last = static_cast<std::int64_t>(frame.tick()) - 1;
+  const auto who = st.world->sightings->aim(last, *task, st.camera_id, st.geometry_hints,
+                                            st.reappearance_hints, st.log->target_of(*task));
   if (!who) return;
   const auto* seen = frame.find(*who);
   if (seen == nullptr ||
@@ -633,6 +639,9 @@ caf::behavior camera_node(node_actor* self, const config::scenario& scenario,
     st.oracle_operator_signature =
         scenario.controller.oracle_signature_from == config::oracle_signature::operator_pick;
     st.oracle_zoom = scenario.controller.oracle_zoom;
+    st.geometry_hints = scenario.sensing.geometry == config::group_geometry::ground_truth;
+    st.reappearance_hints =
+        scenario.sensing.reappearance == config::reappearance_model::ground_truth;
     if (scenario.sensing.mode == config::sensing_mode::pixels) {
       st.pixels.emplace(sensing::pixel_sensor::settings_for(scenario.sensing));
       st.imaging = vision::imaging_model::for_camera(camera.imaging, scenario.run.seed, camera.id);

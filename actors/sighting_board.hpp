@@ -35,6 +35,21 @@ class sighting_board {
     return std::nullopt;
   }
 
+  /// Whom camera `camera`, looking for task `task`'s target without holding her, is to be
+  /// pointed at after the frame of `tick`: with `geometry`, whom another camera of the group
+  /// held then; with `reappearance`, when no camera of the group held anyone then, the target
+  /// herself (`target`, her id).
+  std::optional<int> aim(std::int64_t tick, std::uint32_t task, int camera, bool geometry,
+                         bool reappearance, std::optional<int> target) const {
+    if (geometry)
+      if (auto who = seen(tick, task, camera)) return who;
+    if (reappearance && !seen(tick, task, no_camera)) return target;
+    return std::nullopt;
+  }
+
+  /// Not a camera id: `seen(tick, task, no_camera)` counts every camera.
+  static constexpr int no_camera = -1;
+
  private:
   mutable std::mutex mutex_;
   // (tick, task) -> (not leader, camera) -> pedestrian: leaders first, then by camera.

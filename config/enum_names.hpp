@@ -107,6 +107,15 @@ struct enum_names<group_geometry> {
   }};
 };
 
+/// Names for the sensing `reappearance`.
+template <>
+struct enum_names<reappearance_model> {
+  static constexpr std::array<enum_entry<reappearance_model>, 2> entries{{
+      {reappearance_model::none, "none"},
+      {reappearance_model::ground_truth, "ground_truth"},
+  }};
+};
+
 /// Names for the oracle's `oracle_signature`.
 template <>
 struct enum_names<oracle_signature> {

@@ -228,6 +228,15 @@ enum class identity_source { appearance, ground_truth };
 /// camera's own.
 enum class group_geometry { none, ground_truth };
 
+/// Where a node expects the target to reappear once its whole group has lost her
+/// (sensing.reappearance). none, the paper's: nowhere; the node searches its own view.
+/// ground_truth: an instrument standing in for a perfect model of where people reappear
+/// between views (the multi-camera tracking literature learns such models from transit times
+/// and entry/exit zones): a node that looks for her without holding her, in a frame after one
+/// in which no camera of her group held anyone, is pointed, zoomed, at her true position if it
+/// can reach her. Whom it then finds there is its own tracker's.
+enum class reappearance_model { none, ground_truth };
+
 /// How camera nodes sense (Section III-A, B).
 struct sensing_settings {
   sensing_mode mode = sensing_mode::pixels;
@@ -272,6 +281,9 @@ struct sensing_settings {
   identity_source identity = identity_source::appearance;
   /// What a node knows of the other cameras' views (group_geometry); none is the paper's.
   group_geometry geometry = group_geometry::none;
+  /// Where a node looks for her once her group has lost her (reappearance_model); none is the
+  /// paper's.
+  reappearance_model reappearance = reappearance_model::none;
   friend bool operator==(const sensing_settings&, const sensing_settings&) = default;
 };
 

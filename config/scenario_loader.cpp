@@ -23,7 +23,7 @@ namespace {
 // The keys each mapping allows, in schema order (the order "expected one of" lists them).
 constexpr std::array<std::string_view, 9> scenario_keys{
     "name", "run", "world", "cameras", "network", "controller", "sensing", "tasks", "faults"};
-constexpr std::array<std::string_view, 13> sensing_keys{"mode",
+constexpr std::array<std::string_view, 14> sensing_keys{"mode",
                                                         "sensor_model",
                                                         "tracker_scales",
                                                         "ego_motion",
@@ -35,7 +35,8 @@ constexpr std::array<std::string_view, 13> sensing_keys{"mode",
                                                         "surround_grace_height_px",
                                                         "track_rho",
                                                         "identity",
-                                                        "group_geometry"};
+                                                        "group_geometry",
+                                                        "reappearance"};
 constexpr std::array<std::string_view, 6> run_keys{"seed",  "duration", "tick",
                                                    "speed", "threads",  "output_dir"};
 constexpr std::array<std::string_view, 8> world_keys{
@@ -487,6 +488,7 @@ class scenario_parser {
     sensing.read("track_rho", out.track_rho, value_bounds::closed(0.0, 1.0));
     sensing.read("identity", out.identity);
     sensing.read("group_geometry", out.geometry);
+    sensing.read("reappearance", out.reappearance);
   }
 
   void read_tasks(const YAML::Node& node, const std::vector<camera_settings>& cameras,

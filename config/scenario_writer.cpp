@@ -270,6 +270,7 @@ std::string to_yaml(const scenario& s) {
   out.entry(1, "track_rho", number(s.sensing.track_rho));
   out.entry(1, "identity", yaml_name(s.sensing.identity));
   out.entry(1, "group_geometry", yaml_name(s.sensing.geometry));
+  out.entry(1, "reappearance", yaml_name(s.sensing.reappearance));
 
   out.line(0, s.tasks.empty() ? "tasks: []" : "tasks:");
   for (const auto& each : s.tasks) out.line(1, task(each));

@@ -34,5 +34,23 @@ TEST(sighting_board, what_a_node_reads_of_the_last_frame_stays_while_this_one_is
   EXPECT_EQ(board.seen(21, 3, 1), 8);
 }
 
+// The geometry points at whom another camera of the group holds; the reappearance at her, and
+// only when no camera of the group (the asking one included) holds anyone.
+TEST(sighting_board, a_node_is_aimed_at_whom_the_group_holds_or_at_her_when_it_holds_nobody) {
+  constexpr int her = 77;
+  sighting_board board;
+  EXPECT_FALSE(board.aim(4, 0, 3, false, false, her).has_value());
+  EXPECT_FALSE(board.aim(4, 0, 3, true, false, her).has_value());  // nobody held: no geometry
+  EXPECT_EQ(board.aim(4, 0, 3, false, true, her), her);
+  EXPECT_EQ(board.aim(4, 0, 3, true, true, her), her);
+  board.put(5, 0, 8, true, 12);  // the leader holds a stranger
+  EXPECT_EQ(board.aim(5, 0, 3, true, false, her), 12);
+  EXPECT_EQ(board.aim(5, 0, 3, true, true, her), 12);
+  EXPECT_FALSE(board.aim(5, 0, 3, false, true, her).has_value());  // the group holds someone
+  // The asking camera's own hold is no one to point it at, but the group holds someone.
+  EXPECT_FALSE(board.aim(5, 0, 8, true, true, her).has_value());
+  EXPECT_FALSE(board.aim(5, 0, 8, false, false, her).has_value());
+}
+
 }  // namespace
 }  // namespace argus::actors

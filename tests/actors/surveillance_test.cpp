@@ -241,21 +241,30 @@ int bidders_that_zoomed(const run_outcome& o, const config::scenario& s) {
   return static_cast<int>(zoomed.size());
 }
 
-// sensing.group_geometry: ground_truth: a queried camera that has not found her is pointed and
-// zoomed where the group sees her, where the paper's holds its pose while it looks; and the run
-// stays the same whatever the thread count (nodes read only the last frame's sightings).
+// sensing.group_geometry and sensing.reappearance: ground_truth: a queried camera that has not
+// found her is pointed and zoomed where the group sees her, or where she is once the group holds
+// nobody, where the paper's holds its pose while it looks; and the run stays the same whatever
+// the thread count (nodes read only the last frame's sightings).
 TEST(surveillance, with_the_groups_geometry_bidders_turn_to_where_the_group_sees_her) {
   auto paper = station(90.0, "argus_surveil_geometry");
   const auto held = run_scenario(paper, false);
   EXPECT_EQ(bidders_that_zoomed(held, paper), 0);
-  auto s = paper;
-  s.sensing.geometry = config::group_geometry::ground_truth;
-  const auto aimed = run_scenario(s, false);
-  EXPECT_GT(bidders_that_zoomed(aimed, s), 0);
-  const auto reference = events_of(aimed);
+  const auto paper_events = events_of(held);
+  auto geometry = paper;
+  geometry.sensing.geometry = config::group_geometry::ground_truth;
+  EXPECT_GT(bidders_that_zoomed(run_scenario(geometry, false), geometry), 0);
+  // The reappearance points mostly members that lost her (a bidder is queried while the group
+  // holds someone), which poses.csv does not tell from tracking: sighting_board_test has its
+  // rule; here, that it acts at all.
+  auto reappearance = paper;
+  reappearance.sensing.reappearance = config::reappearance_model::ground_truth;
+  EXPECT_NE(events_of(run_scenario(reappearance, false)), paper_events);
+  auto both = geometry;
+  both.sensing.reappearance = config::reappearance_model::ground_truth;
+  const auto reference = events_of(run_scenario(both, false));
   for (unsigned threads : {1u, 4u}) {
-    s.run.threads = threads;
-    EXPECT_EQ(events_of(run_scenario(s, false)), reference) << threads << " threads";
+    both.run.threads = threads;
+    EXPECT_EQ(events_of(run_scenario(both, false)), reference) << threads << " threads";
   }
 }
 

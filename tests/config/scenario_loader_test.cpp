@@ -334,6 +334,10 @@ TEST(scenario_loader, nodes_know_nothing_of_each_others_views_unless_told) {
       problems_of([] { parse_scenario("sensing: {group_geometry: learned}\n", "b.yaml"); });
   ASSERT_EQ(problems.size(), 1u);
   EXPECT_EQ(problems[0].field, "sensing.group_geometry");
+  EXPECT_EQ(parse_scenario("name: a\n", "a.yaml").sensing.reappearance, reappearance_model::none);
+  EXPECT_EQ(
+      parse_scenario("sensing: {reappearance: ground_truth}\n", "a.yaml").sensing.reappearance,
+      reappearance_model::ground_truth);
 }
 
 // The pixel trackers' reacquisition and model: the paper's unless told.

@@ -98,6 +98,7 @@ TEST(scenario_writer, round_trips_awkward_values_exactly) {
   original.sensing.track_rho = 0.3;
   original.sensing.identity = identity_source::ground_truth;
   original.sensing.geometry = group_geometry::ground_truth;
+  original.sensing.reappearance = reappearance_model::ground_truth;
   original.controller.bid_evidence_time = config::seconds{1.0};
   original.controller.bid_min_found_fraction = 0.6;
   original.controller.bid_min_mean_score = 0.5;
