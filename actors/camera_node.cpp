@@ -219,6 +219,15 @@ eval::target_choice choice_of(config::task_target by) {
   return eval::target_choice::pedestrian;
 }
 
+// Her signature for `task` from this camera's own sensing, which starts its tracker on her: the
+// pixels in `box`, or the emulated sensor's reading of pedestrian `pedestrian`.
+protocol::signature own_signature(camera_node_state& st, controller::task_id task,
+                                  const cv::Mat& image, const world::snapshot& snap,
+                                  const cv::Rect& box, int pedestrian) {
+  return st.pixels ? st.pixels->acquire(task, image, st.head->state(), box)
+                   : st.emulated->acquire(task, snap, pedestrian);
+}
+
 // An operator's task for this camera: its signature from the camera's own sensing, or a
 // refusal when the pedestrian is not in view.
 void take_query(camera_node_state& st, const due_task& q, const world::snapshot* snap,
@@ -237,11 +246,11 @@ void take_query(camera_node_state& st, const due_task& q, const world::snapshot*
   if (st.log)
     st.log->add_origin({q.task, r.pedestrian, st.camera_id, static_cast<std::int64_t>(snap->tick()),
                         choice_of(q.request.by)});
-  if (st.world->oracle) {  // the oracle assigns cameras itself
-    if (st.oracle_operator_signature)
-      st.world->oracle->put_signature(
-          q.task, st.pixels ? st.pixels->acquire(q.task, image, st.head->state(), cv::Rect(*r.box))
-                            : st.emulated->acquire(q.task, *snap, r.pedestrian));
+  // The oracle assigns cameras itself; it needs the pick only to look with it.
+  if (st.world->oracle && !st.oracle_operator_signature) return;
+  auto signature = own_signature(st, q.task, image, *snap, cv::Rect(*r.box), r.pedestrian);
+  if (st.world->oracle) {
+    st.world->oracle->put_signature(q.task, std::move(signature));
     return;
   }
   controller::operator_query query;
@@ -249,9 +258,7 @@ void take_query(camera_node_state& st, const due_task& q, const world::snapshot*
   query.task.min_cameras = static_cast<std::uint16_t>(q.request.cameras_wanted);
   query.task.max_cameras = static_cast<std::uint16_t>(q.request.cameras_max());
   query.box = *r.box;
-  query.task.target = st.pixels
-                          ? st.pixels->acquire(q.task, image, st.head->state(), cv::Rect(*r.box))
-                          : st.emulated->acquire(q.task, *snap, r.pedestrian);
+  query.task.target = std::move(signature);
   st.input.queries.push_back(std::move(query));
 }
 
@@ -365,10 +372,9 @@ void follow_oracle(camera_node_state& st, const world::snapshot* snap, const cv:
   if (sig == st.oracle_signatures.end()) {
     const auto box = sensing::operator_box(*snap, *st.world->station, view_of(st), target);
     if (!box || (st.pixels && image.empty())) return;
-    const auto signature = st.pixels
-                               ? st.pixels->acquire(task, image, st.head->state(), cv::Rect(*box))
-                               : st.emulated->acquire(task, *snap, target);
-    sig = st.oracle_signatures.emplace(task, signature).first;
+    sig = st.oracle_signatures
+              .emplace(task, own_signature(st, task, image, *snap, cv::Rect(*box), target))
+              .first;
   }
   st.looks.push_back({task, sig->second});
 }
