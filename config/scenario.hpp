@@ -277,6 +277,12 @@ struct sensing_settings {
   /// while any other find must score above rho, 0.4 (vision::tracker_settings::track_rho); 0.4,
   /// the default, is the paper's one threshold.
   double track_rho = 0.4;
+  /// Pixel sensing: the operator's pick also gives her signature in halves, the colours of the
+  /// upper and of the lower half of her box (vision/signature_halves.hpp), carried in queries,
+  /// and a find is taken only if its box's halves both match them above this
+  /// (vision::tracker_settings::halves_rho); 0, the default, is the paper's: one histogram of
+  /// the whole box, no halves sent or tested.
+  double halves_rho = 0.0;
   /// Whom a find is taken for (identity_source); appearance, the default, is the paper's.
   identity_source identity = identity_source::appearance;
   /// What a node knows of the other cameras' views (group_geometry); none is the paper's.
@@ -351,6 +357,12 @@ struct controller_settings {
   /// joins with her in view and large. false, the default: the node holds its pose while
   /// bidding and stops looking once it has bid, as this simulator did first.
   bool track_while_bidding = false;
+  /// A leader whose tracker re-takes its model of her from its own pixels (a confirmed track,
+  /// her box grown or shrunk by 1.4 since; sensing.signature_update) makes that model the task's
+  /// signature, the one its later queries and handovers carry: her colours at the size its
+  /// camera zoomed to, not the few pixels of the operator's wide view. false, the default: the
+  /// paper's, the task keeps the signature of the operator's pick.
+  bool share_model = false;
   /// Fig. 15's "random interval": uniform in [0, this].
   seconds demotion_backoff_max{1.0};
   friend bool operator==(const controller_settings&, const controller_settings&) = default;

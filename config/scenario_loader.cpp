@@ -23,7 +23,7 @@ namespace {
 // The keys each mapping allows, in schema order (the order "expected one of" lists them).
 constexpr std::array<std::string_view, 9> scenario_keys{
     "name", "run", "world", "cameras", "network", "controller", "sensing", "tasks", "faults"};
-constexpr std::array<std::string_view, 14> sensing_keys{"mode",
+constexpr std::array<std::string_view, 15> sensing_keys{"mode",
                                                         "sensor_model",
                                                         "tracker_scales",
                                                         "ego_motion",
@@ -34,6 +34,7 @@ constexpr std::array<std::string_view, 14> sensing_keys{"mode",
                                                         "surround_grace_frames",
                                                         "surround_grace_height_px",
                                                         "track_rho",
+                                                        "halves_rho",
                                                         "identity",
                                                         "group_geometry",
                                                         "reappearance"};
@@ -80,7 +81,7 @@ constexpr std::array<std::string_view, 13> network_keys{"loss_probability",
                                                         "hello_interval",
                                                         "neighbour_timeout",
                                                         "unicast"};
-constexpr std::array<std::string_view, 28> controller_keys{"wait_timeout",
+constexpr std::array<std::string_view, 29> controller_keys{"wait_timeout",
                                                            "search_timeout",
                                                            "min_relevance",
                                                            "heartbeat_interval",
@@ -107,6 +108,7 @@ constexpr std::array<std::string_view, 28> controller_keys{"wait_timeout",
                                                            "bid_min_found_fraction",
                                                            "bid_min_mean_score",
                                                            "track_while_bidding",
+                                                           "share_model",
                                                            "demotion_backoff_max"};
 constexpr std::array<std::string_view, 8> task_keys{
     "at",     "pedestrian",     "pixel",       "first_to_enter",
@@ -468,6 +470,7 @@ class scenario_parser {
     controller.read("bid_min_found_fraction", out.bid_min_found_fraction, probability);
     controller.read("bid_min_mean_score", out.bid_min_mean_score, probability);
     controller.read("track_while_bidding", out.track_while_bidding);
+    controller.read("share_model", out.share_model);
     controller.read("demotion_backoff_max", out.demotion_backoff_max, non_negative);
   }
 
@@ -486,6 +489,7 @@ class scenario_parser {
     sensing.read("surround_grace_height_px", out.surround_grace_height_px,
                  value_bounds::closed(0, 100'000));
     sensing.read("track_rho", out.track_rho, value_bounds::closed(0.0, 1.0));
+    sensing.read("halves_rho", out.halves_rho, value_bounds::closed(0.0, 1.0));
     sensing.read("identity", out.identity);
     sensing.read("group_geometry", out.geometry);
     sensing.read("reappearance", out.reappearance);

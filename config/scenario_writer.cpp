@@ -254,6 +254,7 @@ std::string to_yaml(const scenario& s) {
   out.entry(1, "bid_min_found_fraction", number(controller.bid_min_found_fraction));
   out.entry(1, "bid_min_mean_score", number(controller.bid_min_mean_score));
   out.entry(1, "track_while_bidding", boolean(controller.track_while_bidding));
+  out.entry(1, "share_model", boolean(controller.share_model));
   out.entry(1, "demotion_backoff_max", duration(controller.demotion_backoff_max));
 
   out.line(0, "sensing:");
@@ -268,6 +269,7 @@ std::string to_yaml(const scenario& s) {
   out.entry(1, "surround_grace_frames", fmt::format("{}", s.sensing.surround_grace_frames));
   out.entry(1, "surround_grace_height_px", fmt::format("{}", s.sensing.surround_grace_height_px));
   out.entry(1, "track_rho", number(s.sensing.track_rho));
+  out.entry(1, "halves_rho", number(s.sensing.halves_rho));
   out.entry(1, "identity", yaml_name(s.sensing.identity));
   out.entry(1, "group_geometry", yaml_name(s.sensing.geometry));
   out.entry(1, "reappearance", yaml_name(s.sensing.reappearance));

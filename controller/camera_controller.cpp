@@ -174,6 +174,11 @@ void camera_controller::take_looks(const controller_input& in, controller_output
   for (const auto& r : in.looks) {
     if (task_ && r.task == task_->task) {
       seen_now_ = r;
+      if (r.model && settings_.share_model && role_ == group_role::leader) {
+        // Her colours at the size this camera zoomed to: what its next queries carry.
+        task_->target = *r.model;
+        emit(out, "signature_shared", fmt::format(R"("task":{})", task_->task));
+      }
       if (r.found) {
         seen_relevance_ = relevance_of(r.box, false);
         seen_tick_ = now_;

@@ -33,6 +33,9 @@ struct look_result {
   cv::Rect2d box;
   /// The acceptance score (histogram intersection, Fig. 9 step 5).
   double score = 0.0;
+  /// Set in the frame the sensor re-took its model of her from this camera's pixels
+  /// (sensing.signature_update): the signature it looks for from now on.
+  std::optional<protocol::signature> model;
 };
 
 /// An operator's request (Section IV: "the operator selects a pedestrian to be observed in a

@@ -14,6 +14,9 @@ namespace {
 constexpr std::size_t max_count = 65535;
 // A signature's bins multiply out to at most this many (16 x 16 x 16).
 constexpr std::size_t max_signature_bins = 4096;
+// Set in a signature's count of filled bins when its halves follow: a signature without them
+// is encoded as before halves existed, byte for byte.
+constexpr std::uint16_t halves_follow = 0x8000;
 
 class writer {
  public:
@@ -35,13 +38,20 @@ class writer {
     put(s.hue_bins);
     put(s.saturation_bins);
     put(s.value_bins);
+    const bool halves = !s.upper.empty() || !s.lower.empty();
+    put_sparse(s.values, halves ? halves_follow : 0);
+    if (!halves) return;
+    put_sparse(s.upper, 0);
+    put_sparse(s.lower, 0);
+  }
+  void put_sparse(const std::vector<float>& values, std::uint16_t flags) {
     std::uint16_t filled = 0;
-    for (float v : s.values) filled += v != 0.0f ? 1 : 0;
-    put(filled);
-    for (std::size_t i = 0; i < s.values.size(); ++i) {
-      if (s.values[i] == 0.0f) continue;
+    for (float v : values) filled += v != 0.0f ? 1 : 0;
+    put(static_cast<std::uint16_t>(filled | flags));
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      if (values[i] == 0.0f) continue;
       put(static_cast<std::uint16_t>(i));
-      put(s.values[i]);
+      put(values[i]);
     }
   }
   void put(const task_description& t) {
@@ -102,17 +112,30 @@ class reader {
     return true;
   }
   bool get(signature& s) {
-    std::uint16_t filled = 0;
-    if (!get(s.hue_bins) || !get(s.saturation_bins) || !get(s.value_bins) || !get(filled))
-      return false;
+    if (!get(s.hue_bins) || !get(s.saturation_bins) || !get(s.value_bins)) return false;
     const std::size_t bins = std::size_t{s.hue_bins} * s.saturation_bins * s.value_bins;
-    if (bins == 0 || bins > max_signature_bins || filled > bins) return false;
-    s.values.assign(bins, 0.0f);
+    if (bins == 0 || bins > max_signature_bins) return false;
+    bool halves = false;
+    if (!get_sparse(s.values, bins, &halves)) return false;
+    s.upper.clear();
+    s.lower.clear();
+    return !halves || (get_sparse(s.upper, bins, nullptr) && get_sparse(s.lower, bins, nullptr));
+  }
+  // `halves` receives the flag; where none may be set (nullptr), a set flag is malformed.
+  bool get_sparse(std::vector<float>& values, std::size_t bins, bool* halves) {
+    std::uint16_t filled = 0;
+    if (!get(filled)) return false;
+    const bool flagged = (filled & halves_follow) != 0;
+    if (flagged && !halves) return false;
+    if (halves) *halves = flagged;
+    filled = static_cast<std::uint16_t>(filled & ~halves_follow);
+    if (filled > bins) return false;
+    values.assign(bins, 0.0f);
     for (std::uint16_t k = 0; k < filled; ++k) {
       std::uint16_t index = 0;
       float value = 0.0f;
       if (!get(index) || !get(value) || index >= bins || value < 0.0f) return false;
-      s.values[index] = value;
+      values[index] = value;
     }
     return true;
   }

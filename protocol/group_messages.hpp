@@ -24,6 +24,10 @@ struct signature {
   std::uint8_t saturation_bins = 8;
   std::uint8_t value_bins = 4;
   std::vector<float> values;
+  /// The same histogram of the upper and of the lower half of her box (a shirt above trousers,
+  /// not below them), both empty unless the sender tests halves (sensing.signature_layout).
+  std::vector<float> upper;
+  std::vector<float> lower;
   friend bool operator==(const signature&, const signature&) = default;
 };
 

@@ -42,7 +42,7 @@ std::vector<controller::look_result> emulated_looks::look(
         best = v.id;
       }
     }
-    controller::look_result r{l.task, false, {}, 0.0};
+    controller::look_result r{l.task, false, {}, 0.0, std::nullopt};
     if (best >= 0) {
       const auto observed = sensor_.look_for(best, frame, seen, view);
       if (observed.found && (!is_target || is_target(l.task, observed.detection.pedestrian_id))) {

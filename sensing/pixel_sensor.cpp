@@ -23,6 +23,7 @@ vision::tracker_settings pixel_sensor::settings_for(const config::sensing_settin
   settings.surround_grace_frames = sensing.surround_grace_frames;
   settings.surround_grace_height_px = sensing.surround_grace_height_px;
   settings.track_rho = sensing.track_rho;
+  if (sensing.halves_rho > 0.0) settings.halves_rho = sensing.halves_rho;
   return settings;
 }
 
@@ -38,11 +39,17 @@ std::vector<controller::look_result> pixel_sensor::look(
   for (const auto& l : looks) {
     auto it = trackers_.find(l.task);
     if (it == trackers_.end())
-      it = trackers_.emplace(l.task, vision::tracker(to_histogram(l.target), settings_)).first;
+      it = trackers_
+               .emplace(l.task,
+                        vision::tracker(to_histogram(l.target), settings_, to_halves(l.target)))
+               .first;
     vision::tracker::find_check check;
     if (is_target) check = [&](const cv::Rect& box) { return is_target(l.task, box); };
+    const int updates = it->second.model_updates();
     const auto seen = it->second.update(bgr, check);
-    out.push_back({l.task, seen.found, cv::Rect2d(seen.box), seen.score});
+    out.push_back({l.task, seen.found, cv::Rect2d(seen.box), seen.score, std::nullopt});
+    if (it->second.model_updates() != updates)
+      out.back().model = to_signature(it->second.model(), it->second.model_halves());
     kept.insert(trackers_.extract(it));
   }
   trackers_ = std::move(kept);
@@ -54,10 +61,14 @@ protocol::signature pixel_sensor::acquire(controller::task_id task, const cv::Ma
   last_pose_ = pose;
   const auto region = box & cv::Rect(0, 0, bgr.cols, bgr.rows);
   auto histogram = vision::color_histogram::of_region(bgr, region);
-  vision::tracker t(histogram.normalized(), settings_);
+  std::optional<vision::signature_halves> halves;
+  if (settings_.halves_rho)
+    halves =
+        vision::halves_in(vision::bin_index_image(bgr, histogram.bins()), region, histogram.bins());
+  vision::tracker t(histogram.normalized(), settings_, halves);
   t.start(region);
   trackers_.insert_or_assign(task, std::move(t));
-  return to_signature(histogram);
+  return to_signature(histogram, halves);
 }
 
 }  // namespace argus::sensing

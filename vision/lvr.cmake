@@ -10,6 +10,7 @@ list(APPEND argus_vision_sources
   ${CMAKE_CURRENT_LIST_DIR}/ego_motion.cpp
   ${CMAKE_CURRENT_LIST_DIR}/signature_update.cpp
   ${CMAKE_CURRENT_LIST_DIR}/surround_match.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/signature_halves.cpp
   ${CMAKE_CURRENT_LIST_DIR}/fixate_zoom.cpp
   ${CMAKE_CURRENT_LIST_DIR}/relevance.cpp)
 

@@ -20,8 +20,13 @@ cv::Rect window_around(const cv::Rect& box, double margin) {
 
 }  // namespace
 
-tracker::tracker(color_histogram target, tracker_settings settings)
-    : target_(std::move(target)), model_(target_), settings_(settings) {
+tracker::tracker(color_histogram target, tracker_settings settings,
+                 std::optional<signature_halves> halves)
+    : target_(std::move(target)),
+      halves_target_(std::move(halves)),
+      halves_(halves_target_),
+      model_(target_),
+      settings_(settings) {
   // nop
 }
 
@@ -42,7 +47,11 @@ void tracker::update_model(const cv::Mat& bin_indices, const cv::Rect& box) {
   if (model_height_ == 0) model_height_ = box.height;
   if (!model_due(confirmed_, box.height, model_height_, settings_.update)) return;
   model_ = blended_model(target_, bin_indices, box, settings_.update);
+  if (halves_target_)
+    halves_ = blended_halves(*halves_target_, halves_in(bin_indices, box, target_.bins()),
+                             settings_.update.own_weight);
   model_height_ = box.height;
+  ++model_updates_;
 }
 
 std::optional<track_observation> tracker::find_in(const cv::Mat& bin_indices,
@@ -101,8 +110,16 @@ void tracker::follow_camera(const ptz_state& from, const ptz_state& to, const fr
   box_ = rounded;
 }
 
-track_observation tracker::update(const cv::Mat& bgr, const find_check& check) {
+track_observation tracker::update(const cv::Mat& bgr, const find_check& given_check) {
   const auto indices = bin_index_image(bgr, target_.bins());
+  find_check check = given_check;
+  if (halves_ && settings_.halves_rho) {
+    check = [&](const cv::Rect& box) {
+      return halves_match(*halves_, halves_in(indices, box, target_.bins())) >
+                 *settings_.halves_rho &&
+             (!given_check || given_check(box));
+    };
+  }
   const cv::Rect frame(0, 0, bgr.cols, bgr.rows);
   std::optional<cv::Size2d> size;
   if (box_) size = cv::Size2d(box_->size());

@@ -13,6 +13,7 @@
 #include "vision/frame_size.hpp"
 #include "vision/multiscale_localizer.hpp"
 #include "vision/ptz_camera.hpp"
+#include "vision/signature_halves.hpp"
 #include "vision/signature_update.hpp"
 
 namespace argus::vision {
@@ -69,6 +70,11 @@ struct tracker_settings {
   /// anywhere else (the whole frame, a lost track) must still score above rho. Unset: rho, the
   /// paper's one threshold.
   std::optional<double> track_rho;
+  /// With the target's halves given (tracker's constructor), a find is taken only if its box's
+  /// halves match them (halves_match()) above this, in every search: the tracker then weighs up
+  /// to checked_candidates regions above rho and takes the first that passes. Unset: the
+  /// paper's tracker, one histogram of the whole box.
+  std::optional<double> halves_rho;
 };
 
 /// Follows one target frame to frame: backprojects its histogram in a window around the last
@@ -78,8 +84,10 @@ struct tracker_settings {
 /// the whole frame; otherwise reports the track lost.
 class tracker {
  public:
-  /// A tracker for the target with signature `target`.
-  explicit tracker(color_histogram target, tracker_settings settings = {});
+  /// A tracker for the target with signature `target` and, for settings.halves_rho, her
+  /// `halves` (each normalised).
+  explicit tracker(color_histogram target, tracker_settings settings = {},
+                   std::optional<signature_halves> halves = std::nullopt);
 
   /// Starts (or restarts) the track at `box` in the current frame.
   void start(const cv::Rect& box);
@@ -113,6 +121,12 @@ class tracker {
   /// with her pixels as this camera last saw her on a confirmed track.
   const color_histogram& model() const noexcept { return model_; }
 
+  /// The halves it tests finds against (empty without halves), as model() is to target().
+  const std::optional<signature_halves>& model_halves() const noexcept { return halves_; }
+
+  /// How many times it has re-taken its model (update_signature).
+  int model_updates() const noexcept { return model_updates_; }
+
  private:
   std::optional<track_observation> find_in(const cv::Mat& bin_indices, const cv::Rect& window,
                                            const localizer_settings& localizing, bool figure_ground,
@@ -124,6 +138,10 @@ class tracker {
   void update_model(const cv::Mat& bin_indices, const cv::Rect& box);
 
   color_histogram target_;
+  std::optional<signature_halves> halves_target_;
+  // What finds' halves are tested against: her halves as given, or with update_signature
+  // blended with hers as this camera last took its model.
+  std::optional<signature_halves> halves_;
   color_histogram model_;
   tracker_settings settings_;
   multiscale_localizer localizer_;
@@ -137,6 +155,7 @@ class tracker {
   bool on_pick_ = false;
   // The box height the model was last taken at (0: a signature from a message, not yet found).
   int model_height_ = 0;
+  int model_updates_ = 0;
 };
 
 /// The child states of PerformingTask (Fig. 10, inset), plus `failed` once Search times out.

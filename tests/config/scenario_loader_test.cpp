@@ -301,13 +301,15 @@ TEST(scenario_loader, trackers_know_no_poses_and_cameras_zoom_in_track_unless_to
   EXPECT_FALSE(paper.sensing.ego_motion);
   EXPECT_TRUE(paper.controller.zoom_in_track);
   EXPECT_FALSE(paper.controller.track_while_bidding);
+  EXPECT_FALSE(paper.controller.share_model);
   const auto ours = parse_scenario(
       "sensing: {ego_motion: true}\ncontroller: {zoom_in_track: false, track_while_bidding: "
-      "true}\n",
+      "true, share_model: true}\n",
       "a.yaml");
   EXPECT_TRUE(ours.sensing.ego_motion);
   EXPECT_FALSE(ours.controller.zoom_in_track);
   EXPECT_TRUE(ours.controller.track_while_bidding);
+  EXPECT_TRUE(ours.controller.share_model);
 }
 
 // The oracle's instruments: the oracle as first built unless told; a bad name is refused.
@@ -350,12 +352,14 @@ TEST(scenario_loader, trackers_keep_their_signature_and_search_the_whole_frame_u
   EXPECT_EQ(paper.sensing.surround_grace_frames, 0);
   EXPECT_EQ(paper.sensing.surround_grace_height_px, 0);
   EXPECT_EQ(paper.sensing.track_rho, 0.4);
+  EXPECT_EQ(paper.sensing.halves_rho, 0.0);
   EXPECT_EQ(paper.sensing.identity, config::identity_source::appearance);
   EXPECT_EQ(paper.controller.bid_evidence_time, config::seconds{0.0});
   const auto ours = parse_scenario(
       "sensing: {signature_update: true, reacquire_margin: 0.05, local_search_frames: 30,\n"
       "          max_surround_match: 0.65, surround_grace_frames: 15,\n"
-      "          surround_grace_height_px: 40, track_rho: 0.3, identity: ground_truth}\n"
+      "          surround_grace_height_px: 40, track_rho: 0.3, halves_rho: 0.45,\n"
+      "          identity: ground_truth}\n"
       "controller: {bid_evidence_time: 1 s, bid_min_found_fraction: 0.6,\n"
       "             bid_min_mean_score: 0.5}\n",
       "a.yaml");
@@ -363,6 +367,7 @@ TEST(scenario_loader, trackers_keep_their_signature_and_search_the_whole_frame_u
   EXPECT_EQ(ours.sensing.surround_grace_frames, 15);
   EXPECT_EQ(ours.sensing.surround_grace_height_px, 40);
   EXPECT_EQ(ours.sensing.track_rho, 0.3);
+  EXPECT_EQ(ours.sensing.halves_rho, 0.45);
   EXPECT_EQ(ours.sensing.identity, config::identity_source::ground_truth);
   EXPECT_EQ(ours.controller.bid_evidence_time, config::seconds{1.0});
   EXPECT_EQ(ours.controller.bid_min_found_fraction, 0.6);
@@ -378,6 +383,8 @@ TEST(scenario_loader, trackers_keep_their_signature_and_search_the_whole_frame_u
                }).empty());
   EXPECT_FALSE(
       problems_of([] { parse_scenario("sensing: {track_rho: 1.2}\n", "a.yaml"); }).empty());
+  EXPECT_FALSE(
+      problems_of([] { parse_scenario("sensing: {halves_rho: -0.1}\n", "a.yaml"); }).empty());
   EXPECT_FALSE(
       problems_of([] { parse_scenario("sensing: {identity: truth}\n", "a.yaml"); }).empty());
   EXPECT_FALSE(problems_of([] {

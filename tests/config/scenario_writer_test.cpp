@@ -96,6 +96,8 @@ TEST(scenario_writer, round_trips_awkward_values_exactly) {
   original.sensing.surround_grace_frames = 15;
   original.sensing.surround_grace_height_px = 40;
   original.sensing.track_rho = 0.3;
+  original.sensing.halves_rho = 0.45;
+  original.controller.share_model = true;
   original.sensing.identity = identity_source::ground_truth;
   original.sensing.geometry = group_geometry::ground_truth;
   original.sensing.reappearance = reappearance_model::ground_truth;

@@ -34,7 +34,7 @@ struct bidder {
       next.pose = in.pose;
       if (asked)
         next.looks.push_back(
-            {task.task, looks[i].has_value(), centred_box(), looks[i].value_or(0)});
+            {task.task, looks[i].has_value(), centred_box(), looks[i].value_or(0), std::nullopt});
       record(node.step(next));
     }
   }

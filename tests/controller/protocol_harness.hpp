@@ -143,7 +143,8 @@ class protocol_harness {
       in.pose = poses_[id];
       for (const auto& l : looks_[id]) {
         auto box = sees(id, l.task, now_);
-        in.looks.push_back({l.task, box.has_value(), box.value_or(cv::Rect2d{}), box ? 0.8 : 0.0});
+        in.looks.push_back(
+            {l.task, box.has_value(), box.value_or(cv::Rect2d{}), box ? 0.8 : 0.0, std::nullopt});
       }
       if (auto q = queries_.find(now_); q != queries_.end())
         for (const auto& [camera, query] : q->second)

@@ -38,7 +38,7 @@ struct follower {
     in.pose = pose;
     in.messages = std::move(messages);
     const auto box = pose == home ? poor_box() : centred_box();
-    if (asked) in.looks.push_back({task.task, true, box, 0.6});
+    if (asked) in.looks.push_back({task.task, true, box, 0.6, std::nullopt});
     auto out = node.step(in);
     asked = std::any_of(out.looks.begin(), out.looks.end(),
                         [this](const look_request& l) { return l.task == task.task; });

@@ -19,6 +19,15 @@ task_description a_task() {
   return t;
 }
 
+task_description a_task_with_halves() {
+  auto t = a_task();
+  t.target.upper.assign(256, 0.0f);
+  t.target.lower.assign(256, 0.0f);
+  t.target.upper[10] = 1.0f;
+  t.target.lower[200] = 1.0f;
+  return t;
+}
+
 std::vector<group_message> one_of_each() {
   relevance_bid bid{3, 1, 4, 9, 0.625, true, false, 5u, 6};
   return {query_relevance{a_task(), 1, 4, true},
@@ -33,7 +42,8 @@ std::vector<group_message> one_of_each() {
           csp_query{3, 1, 2},
           csp_data{3, 1, 2, 1, 2, {{4, 0.5}, {5, 0.25}}, {4}},
           csp_result{3, 1, {4, 5}, 1},
-          task_cancel{3, 1}};
+          task_cancel{3, 1},
+          query_relevance{a_task_with_halves(), 1, 4, false}};
 }
 
 TEST(group_messages, every_kind_survives_its_encoding) {
@@ -42,6 +52,19 @@ TEST(group_messages, every_kind_survives_its_encoding) {
     ASSERT_TRUE(back) << kind_of(m);
     EXPECT_EQ(*back, m) << kind_of(m);
   }
+}
+
+TEST(group_messages, a_signature_carries_its_halves_only_when_it_has_them) {
+  const auto plain = join{a_task(), 1, 9, true};
+  const auto halved = join{a_task_with_halves(), 1, 9, true};
+  const auto back = decode("join", encode(halved));
+  ASSERT_TRUE(back);
+  EXPECT_EQ(*back, group_message{halved});
+  // Two more sparse histograms of one filled bin each: a count and an (index, value) apiece.
+  EXPECT_EQ(encode(halved).size(), encode(plain).size() + 2 * (2 + 2 + 4));
+  const auto plain_back = decode("join", encode(plain));
+  ASSERT_TRUE(plain_back);
+  EXPECT_TRUE(std::get<join>(*plain_back).task.target.upper.empty());
 }
 
 TEST(group_messages, the_paper_names_the_kinds) {

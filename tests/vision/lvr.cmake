@@ -13,6 +13,7 @@ set(argus_vision_lvr_tests
   signature_update_test
   reacquisition_test
   surround_match_test
+  signature_halves_test
   relevance_test
   emulated_sensor_test
   emulated_sensor_fidelity_test
