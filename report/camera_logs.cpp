@@ -152,6 +152,18 @@ const camera_pose* pose_history::at(int camera, std::int64_t world_tick) const {
   return after == rows.begin() ? nullptr : &*std::prev(after);
 }
 
+const std::vector<camera_pose>& pose_history::rows_of(int camera) const {
+  static const std::vector<camera_pose> none;
+  const auto it = by_camera_.find(camera);
+  return it == by_camera_.end() ? none : it->second;
+}
+
+std::vector<int> pose_history::cameras() const {
+  std::vector<int> out;
+  for (const auto& [camera, rows] : by_camera_) out.push_back(camera);
+  return out;
+}
+
 track_history track_history::read(const std::filesystem::path& file) {
   return parse(text_of(file), file.string());
 }

@@ -42,6 +42,12 @@ class pose_history {
   /// nullptr when it has none yet.
   const camera_pose* at(int camera, std::int64_t world_tick) const;
 
+  /// Camera `camera`'s rows in tick order (empty when it has none).
+  const std::vector<camera_pose>& rows_of(int camera) const;
+
+  /// The cameras that have rows, ascending.
+  std::vector<int> cameras() const;
+
  private:
   std::map<int, std::vector<camera_pose>> by_camera_;  // each in tick order
 };

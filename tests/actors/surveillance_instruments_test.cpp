@@ -15,6 +15,7 @@
 #include "actors/run_scenario.hpp"
 #include "config/enum_names.hpp"
 #include "config/scenario_loader.hpp"
+#include "report/camera_logs.hpp"
 #include "surveillance_runs.hpp"
 
 namespace argus::actors {
@@ -35,16 +36,10 @@ TEST(surveillance, the_oracle_without_zoom_keeps_every_default_field_of_view) {
     const auto o = run_scenario(s, false);
     std::map<int, double> home;
     for (const auto& c : s.cameras) home[c.id] = c.field_of_view_deg;
-    std::ifstream poses(o.output_dir / "poses.csv");
-    std::string line;
-    std::getline(poses, line);
-    while (std::getline(poses, line)) {
-      std::vector<std::string> cells;
-      std::stringstream row(line);
-      for (std::string cell; std::getline(row, cell, ',');) cells.push_back(cell);
-      ASSERT_GE(cells.size(), 6u) << line;
-      zoomed_rows[zoom] += std::abs(std::stod(cells[5]) - home.at(std::stoi(cells[2]))) > 1e-6;
-    }
+    const auto poses = report::pose_history::read(o.output_dir / "poses.csv");
+    for (int camera : poses.cameras())
+      for (const auto& pose : poses.rows_of(camera))
+        zoomed_rows[zoom] += std::abs(pose.field_of_view_deg - home.at(camera)) > 1e-6;
     EXPECT_GT(o.evaluation.tasks.at(0).coverage, 0.0) << zoom;
   }
   EXPECT_GT(zoomed_rows[true], 0);
@@ -80,27 +75,24 @@ TEST(surveillance, the_oracle_can_look_with_the_operators_signature) {
 // How many times a queried camera zoomed in while bidding (state computing_relevance, field of
 // view below its default) within 1 s of the query, from the run's events and poses.csv.
 int bidders_that_zoomed(const run_outcome& o, const config::scenario& s) {
+  const auto one_second = static_cast<std::int64_t>(std::lround(1.0 / s.run.tick.count()));
   std::map<int, double> home;
   for (const auto& c : s.cameras) home[c.id] = c.field_of_view_deg;
-  std::multimap<int, double> queried;  // camera -> when
+  std::multimap<int, std::int64_t> queried;  // camera -> world tick
   for (const auto& e : events_of(o))
-    if (e["kind"] == "queried") queried.emplace(e["camera"].get<int>(), e["t"].get<double>());
-  std::ifstream poses(o.output_dir / "poses.csv");
-  std::string line;
-  std::getline(poses, line);
-  std::set<std::pair<int, double>> zoomed;
-  while (std::getline(poses, line)) {
-    std::vector<std::string> cells;
-    std::stringstream row(line);
-    for (std::string cell; std::getline(row, cell, ',');) cells.push_back(cell);
-    if (cells.size() < 7 || cells[6] != "computing_relevance") continue;
-    const int camera = std::stoi(cells[2]);
-    const double t = std::stod(cells[1]);
-    if (std::stod(cells[5]) >= home.at(camera) - 1e-6) continue;
-    auto [first, last] = queried.equal_range(camera);
-    for (auto it = first; it != last; ++it)
-      if (t > it->second && t <= it->second + 1.0) zoomed.insert({camera, it->second});
-  }
+    if (e["kind"] == "queried")
+      queried.emplace(e["camera"].get<int>(), e["tick"].get<std::int64_t>());
+  const auto poses = report::pose_history::read(o.output_dir / "poses.csv");
+  std::set<std::pair<int, std::int64_t>> zoomed;
+  for (int camera : poses.cameras())
+    for (const auto& pose : poses.rows_of(camera)) {
+      if (pose.state != "computing_relevance") continue;
+      if (pose.field_of_view_deg >= home.at(camera) - 1e-6) continue;
+      auto [first, last] = queried.equal_range(camera);
+      for (auto it = first; it != last; ++it)
+        if (pose.world_tick > it->second && pose.world_tick <= it->second + one_second)
+          zoomed.insert({camera, it->second});
+    }
   return static_cast<int>(zoomed.size());
 }
 

@@ -24,6 +24,10 @@ TEST(camera_logs, a_cameras_pose_holds_from_its_row_to_the_next) {
   EXPECT_EQ(poses.at(3, 150)->state, "idle");
   EXPECT_EQ(poses.at(3, 151)->state, "down");
   EXPECT_EQ(poses.at(2, 100), nullptr);
+  EXPECT_EQ(poses.cameras(), (std::vector<int>{1, 3}));
+  ASSERT_EQ(poses.rows_of(1).size(), 2u);
+  EXPECT_EQ(poses.rows_of(1)[1].world_tick, 90);
+  EXPECT_TRUE(poses.rows_of(2).empty());
 }
 
 TEST(camera_logs, tracks_by_camera_and_tick_and_the_first_report_on_a_task) {
