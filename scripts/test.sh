@@ -27,7 +27,9 @@ argus_build build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DARGUS_SANITIZE=addres
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DARGUS_BUILD_BENCH=OFF
 # A test that fails is run once more under ASan: LeakSanitizer's exit-time tracer sometimes
 # crashes itself ("Tracer caught signal 11 ... LeakSanitizer has encountered a fatal error")
-# in runs with many threads (CAF's workers, llvmpipe's); a real failure fails twice.
+# in runs with many threads (CAF's workers, llvmpipe's); a real failure fails twice. The
+# scripts that make many such runs in one test retry that crash alone
+# (tests/apps/same_log_any_threads.cmake).
 ctest --test-dir build-asan --output-on-failure -j "$jobs" --repeat until-pass:2
 
 export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1:suppressions=$ARGUS_ROOT/tests/tsan.supp"
