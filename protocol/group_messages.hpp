@@ -25,7 +25,7 @@ struct signature {
   std::uint8_t value_bins = 4;
   std::vector<float> values;
   /// The same histogram of the upper and of the lower half of her box (a shirt above trousers,
-  /// not below them), both empty unless the sender tests halves (sensing.signature_layout).
+  /// not below them), both empty unless the sender tests halves (sensing.halves_rho).
   std::vector<float> upper;
   std::vector<float> lower;
   friend bool operator==(const signature&, const signature&) = default;

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "vision/signature_update.hpp"
+
 namespace argus::vision {
 
 box_halves halves_of(const cv::Rect& box) {
@@ -39,21 +41,6 @@ color_histogram merged_into(const color_histogram& histogram, const histogram_bi
   }
   return coarse;
 }
-
-namespace {
-
-color_histogram blended(const color_histogram& signature, const color_histogram& seen,
-                        double own_weight) {
-  const auto a = signature.normalized();
-  const auto b = seen.normalized();
-  color_histogram out(a.bins());
-  if (b.bins() != a.bins()) return a;
-  for (std::size_t i = 0; i < out.counts().size(); ++i)
-    out.counts()[i] = static_cast<float>((1.0 - own_weight) * a[i] + own_weight * b[i]);
-  return out.normalized();
-}
-
-}  // namespace
 
 signature_halves blended_halves(const signature_halves& signature, const signature_halves& seen,
                                 double own_weight) {

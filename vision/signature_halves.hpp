@@ -45,8 +45,8 @@ histogram_bins halves_comparison_bins(const histogram_bins& signature_bins);
 /// histogram's): a bin goes to the coarse bin that covers the same part of each channel.
 color_histogram merged_into(const color_histogram& histogram, const histogram_bins& bins);
 
-/// `signature` and `seen` blended, `own_weight` of `seen` (each half normalised before and
-/// after): what a tracker that re-takes its model from its own pixels (signature_update) tests
+/// `signature` and `seen` blended half by half as signature_update blends a model (blended()):
+/// what a tracker that re-takes its model from its own pixels (signature_update) tests
 /// halves against, so that her halves zoomed in are compared with her zoomed in.
 signature_halves blended_halves(const signature_halves& signature, const signature_halves& seen,
                                 double own_weight);

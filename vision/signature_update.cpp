@@ -19,20 +19,24 @@ bool model_due(int confirmed_frames, int box_height_px, int model_height_px,
   return ratio >= settings.height_change || ratio <= 1.0 / settings.height_change;
 }
 
+color_histogram blended(const color_histogram& signature, const color_histogram& own,
+                        double own_weight) {
+  const auto given = signature.normalized();
+  const auto seen = own.normalized();
+  if (seen.total() <= 0.0 || seen.bins() != given.bins()) return given;
+  color_histogram model(given.bins());
+  auto counts = model.counts();
+  for (std::size_t i = 0; i < counts.size(); ++i)
+    counts[i] = static_cast<float>((1.0 - own_weight) * given[i] + own_weight * seen[i]);
+  return model.normalized();
+}
+
 color_histogram blended_model(const color_histogram& signature, const cv::Mat& bin_indices,
                               const cv::Rect& box, const signature_update_settings& settings) {
   const auto core = body_core(box, settings) & cv::Rect(0, 0, bin_indices.cols, bin_indices.rows);
   if (core.empty()) return signature.normalized();
-  const auto own =
-      color_histogram::of_bin_indices(bin_indices, core, signature.bins()).normalized();
-  if (own.total() <= 0.0) return signature.normalized();
-  const auto given = signature.normalized();
-  color_histogram model(signature.bins());
-  auto counts = model.counts();
-  const double w = settings.own_weight;
-  for (std::size_t i = 0; i < counts.size(); ++i)
-    counts[i] = static_cast<float>((1.0 - w) * given[i] + w * own[i]);
-  return model.normalized();
+  return blended(signature, color_histogram::of_bin_indices(bin_indices, core, signature.bins()),
+                 settings.own_weight);
 }
 
 }  // namespace argus::vision

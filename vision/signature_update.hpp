@@ -39,6 +39,11 @@ cv::Rect body_core(const cv::Rect& box, const signature_update_settings& setting
 bool model_due(int confirmed_frames, int box_height_px, int model_height_px,
                const signature_update_settings& settings);
 
+/// `signature` and `own` normalised and blended, `own_weight` of `own`, normalised: the
+/// signature alone (normalised) when `own` is empty or has other bins.
+color_histogram blended(const color_histogram& signature, const color_histogram& own,
+                        double own_weight);
+
 /// The model: the normalised signature and the normalised histogram of `box`'s core in the
 /// bin-index image, blended by own_weight, normalised.
 color_histogram blended_model(const color_histogram& signature, const cv::Mat& bin_indices,
