@@ -1,8 +1,10 @@
 #include "report/feed_frames.hpp"
 
 #include <algorithm>
+#include <exception>
 #include <map>
 #include <opencv2/imgproc.hpp>
+#include <thread>
 
 #include "config/derive_seed.hpp"
 #include "fmt/format.h"
@@ -71,7 +73,9 @@ void settle_on_first_report(std::vector<key_event>& events, const track_history&
   }
 }
 
-std::vector<std::vector<cv::Mat>> render_key_frames(
+namespace {
+
+std::vector<std::vector<cv::Mat>> render_on_this_thread(
     const config::scenario& scenario, const std::shared_ptr<const world::station>& station,
     const std::vector<key_event>& events, const pose_history& poses, const track_history& tracks) {
   std::vector<std::vector<cv::Mat>> out(events.size());
@@ -120,6 +124,28 @@ std::vector<std::vector<cv::Mat>> render_key_frames(
       out[slot.event][slot.frame] = std::move(image);
     }
   }
+  return out;
+}
+
+}  // namespace
+
+std::vector<std::vector<cv::Mat>> render_key_frames(
+    const config::scenario& scenario, const std::shared_ptr<const world::station>& station,
+    const std::vector<key_event>& events, const pose_history& poses, const track_history& tracks) {
+  // On a thread of its own, ended before this returns. The OpenGL driver's thread-local
+  // storage goes with it; left in the main thread, which lives until exit, LeakSanitizer's
+  // exit-time scan read a stale entry of it and crashed in most ASan runs that wrote feeds/.
+  std::vector<std::vector<cv::Mat>> out;
+  std::exception_ptr error;
+  std::thread renderer_thread([&] {
+    try {
+      out = render_on_this_thread(scenario, station, events, poses, tracks);
+    } catch (...) {
+      error = std::current_exception();
+    }
+  });
+  renderer_thread.join();
+  if (error) std::rethrow_exception(error);
   return out;
 }
 

@@ -25,11 +25,10 @@ echo "== ASan+UBSan build and tests ($(stage_time))"
 # sanitizer build took half of CI's 90 minutes; a CAF-heavy file now compiles 2.6x faster.
 argus_build build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DARGUS_SANITIZE=address,undefined \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DARGUS_BUILD_BENCH=OFF
-# A test that fails is run once more under ASan: LeakSanitizer's exit-time tracer sometimes
-# crashes itself ("Tracer caught signal 11 ... LeakSanitizer has encountered a fatal error")
-# in runs with many threads (CAF's workers, llvmpipe's); a real failure fails twice. The
-# scripts that make many such runs in one test retry that crash alone
-# (tests/apps/same_log_any_threads.cmake).
+# A test that fails is run once more under ASan: LeakSanitizer's exit-time tracer can crash
+# itself ("Tracer caught signal 11 ... LeakSanitizer has encountered a fatal error"); a real
+# failure fails twice. (Its frequent cause here, a stale entry of the OpenGL driver's dynamic
+# TLS in a main thread that had rendered, is gone: report/feed_frames.cpp.)
 ctest --test-dir build-asan --output-on-failure -j "$jobs" --repeat until-pass:2
 
 export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1:suppressions=$ARGUS_ROOT/tests/tsan.supp"

@@ -23,22 +23,10 @@ foreach(run IN LISTS RUNS)
   list(GET run 0 threads)
   list(GET run 1 speed)
   set(dir "${OUT}/t${threads}_s${speed}")
-  # Under ASan, LeakSanitizer's own exit-time tracer sometimes crashes in a process with many
-  # threads ("Tracer caught signal 11 ... LeakSanitizer has encountered a fatal error";
-  # google/sanitizers#1353), after the run has written everything; this script makes up to 10
-  # such runs, so that crash alone is retried, twice at most. A leak it found, or any other
-  # failure, fails at once.
-  foreach(attempt RANGE 1 3)
-    file(REMOVE_RECURSE "${dir}")
-    execute_process(COMMAND "${ARGUS}" run "${SCENARIO}" --threads ${threads} --speed ${speed}
-                            --duration "${DURATION}" --out "${dir}" --no-progress ${ARGS}
-                    RESULT_VARIABLE code OUTPUT_QUIET ERROR_VARIABLE err)
-    if(code EQUAL 0 OR NOT err MATCHES "LeakSanitizer has encountered a fatal error"
-       OR err MATCHES "detected memory leaks")
-      break()
-    endif()
-    message(STATUS "LeakSanitizer's tracer crashed with --threads ${threads} (attempt ${attempt})")
-  endforeach()
+  file(REMOVE_RECURSE "${dir}")
+  execute_process(COMMAND "${ARGUS}" run "${SCENARIO}" --threads ${threads} --speed ${speed}
+                          --duration "${DURATION}" --out "${dir}" --no-progress ${ARGS}
+                  RESULT_VARIABLE code OUTPUT_QUIET ERROR_VARIABLE err)
   if(NOT code EQUAL 0)
     message(FATAL_ERROR "argus run failed (${code}) with --threads ${threads}: ${err}")
   endif()
