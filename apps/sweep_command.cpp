@@ -3,6 +3,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <csignal>
 #include <fstream>
 #include <iostream>
@@ -18,6 +19,7 @@
 #include "config/scenario_loader.hpp"
 #include "fmt/format.h"
 #include "report/binary_file.hpp"
+#include "report/paired_differences.hpp"
 #include "report/sweep_grid.hpp"
 #include "report/sweep_outputs.hpp"
 
@@ -34,6 +36,8 @@ struct sweep_arguments {
   std::optional<std::string> duration;
   std::string program;
   bool feeds = false;
+  std::string compare = "mean_coverage";
+  double equal_within = 0.0;
 };
 
 // Children the signal handler stops; slots hold 0 when free. A handler may only call
@@ -163,6 +167,7 @@ class sweep {
     results.scenario = args_.scenario;
     results.parameters = parameters_;
     results.seeds = args_.seeds;
+    results.equal_within = args_.equal_within;
     std::size_t failed = 0;
     std::size_t missing = 0;
     for (const auto& planned : runs_) {
@@ -182,15 +187,57 @@ class sweep {
       results.runs.push_back(std::move(run));
     }
     const auto written = report::write_sweep_outputs(dir_, results);
+    print_comparisons(results);
     std::cout << fmt::format(
-        "argus sweep: {} runs, {} failed, {} not done; wrote {} and {} plots\n", runs_.size(),
-        failed, missing, (dir_ / "sweep.csv").string(), written.size() - 2);
+        "argus sweep: {} runs, {} failed, {} not done; wrote {}, {} and {} plots\n", runs_.size(),
+        failed, missing, (dir_ / "sweep.csv").string(), (dir_ / "paired.csv").string(),
+        written.size() - 3);
     if (interrupted) {
       std::cerr << "argus sweep: interrupted; the same command resumes it, redoing only the "
                    "runs without a complete metrics.json\n";
       return 130;
     }
     return failed > 0 ? run_failed : ok;
+  }
+
+  // The --compare metric at each value of each parameter that varies, and each value paired by
+  // seed with the first (paired.csv has every metric).
+  void print_comparisons(const report::sweep_results& results) const {
+    const auto names = results.metric_names();
+    if (std::find(names.begin(), names.end(), args_.compare) == names.end()) {
+      std::cout << fmt::format("argus sweep: no run reported {} (--compare)\n", args_.compare);
+      return;
+    }
+    auto signed_text = [](double v) { return fmt::format("{:+.4f}", v); };
+    for (std::size_t k = 0; k < parameters_.size(); ++k) {
+      if (parameters_[k].values.size() < 2) continue;
+      std::cout << fmt::format("{} by {}, each value paired by seed with {}:\n", args_.compare,
+                               parameters_[k].key, parameters_[k].values.front());
+      const auto points = results.metric_points(args_.compare, k);
+      const auto differences = report::paired_differences(results, args_.compare, k);
+      for (std::size_t v = 0; v < points.size(); ++v) {
+        const auto& m = points[v].metric;
+        std::string line = fmt::format("  {:<16} n={:<4} mean {}", points[v].value, m.count,
+                                       m.count > 0 ? fmt::format("{:.4f}", m.mean) : "-");
+        if (v > 0) {
+          const auto& d = differences[v - 1];
+          if (d.difference.count == 0) {
+            line += "  no pairs";
+          } else {
+            line += fmt::format("  difference {} over {} pairs", signed_text(d.difference.mean),
+                                d.difference.count);
+            if (d.difference.half_width)
+              line += fmt::format(" (95% CI {} to {}, SE {:.4f})",
+                                  signed_text(d.difference.mean - *d.difference.half_width),
+                                  signed_text(d.difference.mean + *d.difference.half_width),
+                                  *d.difference.standard_error);
+            line += fmt::format(", higher {} / lower {} / equal {}, sign test p {:.3g}", d.higher,
+                                d.lower, d.equal, d.sign_test_p);
+          }
+        }
+        std::cout << line << '\n';
+      }
+    }
   }
 
   const sweep_arguments& args_;
@@ -279,6 +326,13 @@ void add_sweep_command(CLI::App& app, int& result) {
       ->check(integer_in(0, 256));
   cmd->add_option("--out", args->out, "Sweep folder (default out/sweep_<scenario name>)");
   cmd->add_option("--duration", args->duration, "Virtual duration of each run, e.g. '2 min'");
+  cmd->add_option("--compare", args->compare,
+                  "The metric printed at the end, each value paired by seed with its parameter's "
+                  "first (default mean_coverage; paired.csv has every metric)");
+  cmd->add_option("--equal-within", args->equal_within,
+                  "Paired differences within this of 0 count as neither higher nor lower "
+                  "(default 0)")
+      ->check(CLI::NonNegativeNumber);
   cmd->add_flag("--feeds", args->feeds,
                 "Let each run draw its feeds/ (key frames; runs get --no-feeds by default)");
   cmd->add_option("--argus", args->program,

@@ -49,7 +49,8 @@ mean_interval mean_with_ci95(std::span<const double> values) {
   for (double v : values) squares += (v - out.mean) * (v - out.mean);
   const double n = static_cast<double>(values.size());
   const double standard_deviation = std::sqrt(squares / (n - 1.0));
-  out.half_width = t_quantile_975(values.size() - 1) * standard_deviation / std::sqrt(n);
+  out.standard_error = standard_deviation / std::sqrt(n);
+  out.half_width = t_quantile_975(values.size() - 1) * *out.standard_error;
   return out;
 }
 

@@ -12,6 +12,8 @@ struct mean_interval {
   double mean = 0.0;
   /// The interval's half width; nothing for a sample of one (no spread to estimate).
   std::optional<double> half_width;
+  /// s / sqrt(n), the standard error of the mean; nothing for a sample of one.
+  std::optional<double> standard_error;
 };
 
 /// mean_interval of `values`; count 0 and mean 0 for an empty sample.

@@ -43,14 +43,14 @@ std::vector<double> ticks_over(double low, double high) {
 
 }  // namespace
 
-std::vector<unsigned char> render_metric_plot(const std::string& metric,
+std::vector<unsigned char> render_metric_plot(const std::string& title,
                                               const std::string& parameter,
                                               const std::vector<metric_point>& all_points) {
   std::vector<metric_point> points;
   for (const auto& p : all_points)
     if (p.metric.count > 0) points.push_back(p);
   cv::Mat image(height_px, width_px, CV_8UC3, cv::Scalar(255, 255, 255));
-  draw_text(image, fmt::format("{} vs {} (mean, 95% CI)", metric, parameter), {left_px, 26}, 0.55);
+  draw_text(image, title, {left_px, 26}, 0.55);
   const int plot_w = width_px - left_px - right_px;
   const int plot_h = height_px - top_px - bottom_px;
   cv::rectangle(image, {left_px, top_px}, {left_px + plot_w, top_px + plot_h}, ink, 1);

@@ -14,10 +14,11 @@ struct metric_point {
   mean_interval metric;
 };
 
-/// A metric against one swept parameter: the mean at each value joined by a line, its 95%
-/// confidence interval as an error bar. The x axis is numeric when every value is a number,
-/// else categorical in the order given. Values with no runs are left out. Returns PNG bytes.
-std::vector<unsigned char> render_metric_plot(const std::string& metric,
+/// A metric against one swept parameter, titled `title`: the mean at each value joined by a
+/// line, its 95% confidence interval as an error bar, n beside it. The x axis is numeric when
+/// every value is a number, else categorical in the order given. Values with no runs are left
+/// out. Returns PNG bytes.
+std::vector<unsigned char> render_metric_plot(const std::string& title,
                                               const std::string& parameter,
                                               const std::vector<metric_point>& points);
 

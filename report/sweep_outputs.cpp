@@ -1,9 +1,11 @@
 #include "report/sweep_outputs.hpp"
 
 #include <algorithm>
+#include <optional>
 
 #include "fmt/format.h"
 #include "report/binary_file.hpp"
+#include "report/paired_differences.hpp"
 
 namespace argus::report {
 
@@ -31,7 +33,56 @@ std::string file_name_part(const std::string& text) {
   return out;
 }
 
+nlohmann::json number_or_null(const std::optional<double>& value) {
+  return value ? nlohmann::json(*value) : nlohmann::json();
+}
+
+std::optional<double> ci95_low(const mean_interval& m) {
+  if (!m.half_width) return std::nullopt;
+  return m.mean - *m.half_width;
+}
+
+std::optional<double> ci95_high(const mean_interval& m) {
+  if (!m.half_width) return std::nullopt;
+  return m.mean + *m.half_width;
+}
+
+std::optional<double> mean_of(const mean_interval& m) {
+  if (m.count == 0) return std::nullopt;
+  return m.mean;
+}
+
+std::string optional_text(const std::optional<double>& value) {
+  return value ? fmt::format("{}", *value) : std::string{};
+}
+
+// The parameters a paired comparison exists for: those with two values or more.
+bool compared(const swept_parameter& parameter) {
+  return parameter.values.size() >= 2;
+}
+
 }  // namespace
+
+std::string paired_csv(const sweep_results& results) {
+  std::string csv =
+      "metric,parameter,value,baseline,pairs,mean_difference,standard_error,ci95_low,ci95_high,"
+      "higher,lower,equal,equal_within,sign_test_p\n";
+  for (const auto& metric : results.metric_names()) {
+    for (std::size_t k = 0; k < results.parameters.size(); ++k) {
+      if (!compared(results.parameters[k])) continue;
+      for (const auto& d : paired_differences(results, metric, k)) {
+        csv += fmt::format(
+            "{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", csv_field(metric),
+            csv_field(results.parameters[k].key), csv_field(d.value), csv_field(d.baseline),
+            d.difference.count, optional_text(mean_of(d.difference)),
+            optional_text(d.difference.standard_error), optional_text(ci95_low(d.difference)),
+            optional_text(ci95_high(d.difference)), d.higher, d.lower, d.equal,
+            results.equal_within, d.sign_test_p);
+      }
+    }
+  }
+  return csv;
+}
 
 std::string sweep_csv(const sweep_results& results) {
   const auto metrics = results.metric_names();
@@ -91,6 +142,27 @@ nlohmann::json sweep_json(const sweep_results& results) {
       }
     }
   }
+  auto& paired = j["paired"] = nlohmann::json::object();
+  for (const auto& metric : results.metric_names()) {
+    for (std::size_t k = 0; k < results.parameters.size(); ++k) {
+      if (!compared(results.parameters[k])) continue;
+      auto& rows = paired[metric][results.parameters[k].key] = nlohmann::json::array();
+      for (const auto& d : paired_differences(results, metric, k)) {
+        rows.push_back({{"value", d.value},
+                        {"baseline", d.baseline},
+                        {"pairs", d.difference.count},
+                        {"mean_difference", number_or_null(mean_of(d.difference))},
+                        {"standard_error", number_or_null(d.difference.standard_error)},
+                        {"ci95_low", number_or_null(ci95_low(d.difference))},
+                        {"ci95_high", number_or_null(ci95_high(d.difference))},
+                        {"higher", d.higher},
+                        {"lower", d.lower},
+                        {"equal", d.equal},
+                        {"equal_within", results.equal_within},
+                        {"sign_test_p", d.sign_test_p}});
+      }
+    }
+  }
   return j;
 }
 
@@ -101,6 +173,8 @@ std::vector<std::filesystem::path> write_sweep_outputs(const std::filesystem::pa
   written.push_back(dir / "sweep.csv");
   write_file(dir / "sweep.json", sweep_json(results).dump(2) + "\n");
   written.push_back(dir / "sweep.json");
+  write_file(dir / "paired.csv", paired_csv(results));
+  written.push_back(dir / "paired.csv");
   const auto plots = dir / "plots";
   for (const auto& metric : results.metric_names()) {
     for (std::size_t k = 0; k < results.parameters.size(); ++k) {
@@ -113,8 +187,27 @@ std::vector<std::filesystem::path> write_sweep_outputs(const std::filesystem::pa
       std::filesystem::create_directories(plots);
       const auto file =
           plots / (file_name_part(metric) + "_vs_" + file_name_part(parameter.key) + ".png");
-      write_file(file, render_metric_plot(metric, parameter.key, points));
+      write_file(file,
+                 render_metric_plot(fmt::format("{} vs {} (mean, 95% CI)", metric, parameter.key),
+                                    parameter.key, points));
       written.push_back(file);
+      // The same against the baseline, run by run: the baseline at 0, each other value at its
+      // mean paired difference.
+      const auto differences = paired_differences(results, metric, k);
+      std::vector<metric_point> paired_points{{parameter.values.front(), {}}};
+      for (const auto& d : differences) {
+        paired_points.push_back({d.value, d.difference});
+        paired_points.front().metric.count =
+            std::max(paired_points.front().metric.count, d.difference.count);
+      }
+      if (paired_points.front().metric.count == 0) continue;
+      const auto paired_file =
+          plots / (file_name_part(metric) + "_vs_" + file_name_part(parameter.key) + "_paired.png");
+      write_file(paired_file,
+                 render_metric_plot(fmt::format("{} minus at {}, paired by seed (mean, 95% CI)",
+                                                metric, parameter.values.front()),
+                                    parameter.key, paired_points));
+      written.push_back(paired_file);
     }
   }
   return written;

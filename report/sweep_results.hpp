@@ -37,6 +37,8 @@ struct sweep_results {
   std::vector<swept_parameter> parameters;
   std::size_t seeds = 0;
   std::vector<sweep_run> runs;
+  /// Paired differences within this of 0 count as neither higher nor lower (`--equal-within`).
+  double equal_within = 0.0;
 
   /// The numeric fields of the runs' summaries, by name.
   std::vector<std::string> metric_names() const;

@@ -83,3 +83,16 @@ string(JSON n GET "${json}" statistics mean_coverage network.loss_probability 1 
 if(NOT n EQUAL 6 OR NOT mean MATCHES "^0\\.72")
   message(FATAL_ERROR "sweep.json: mean_coverage at loss 0.2 is ${mean} over ${n} runs")
 endif()
+# Paired by seed and solver, loss 0.2 is 0.2 below loss 0 in each of the 6 pairs: sign test
+# p = 2 / 2^6; the solvers give the same coverage, so they differ in no pair.
+file(STRINGS ${OUT}/paired.csv paired REGEX "^mean_coverage,")
+if(NOT paired MATCHES "^mean_coverage,network.loss_probability,0.2,0,6,-0.2[0-9]*,[0-9.e-]+,[-0-9.e]+,[-0-9.e]+,0,6,0,0,0.03125[0-9]*;mean_coverage,controller.solver,all_solv,best_solv,6,0,0,0,0,0,0,6,0,1$")
+  message(FATAL_ERROR "paired.csv, mean_coverage: '${paired}'")
+endif()
+if(NOT out MATCHES "mean_coverage by network.loss_probability, each value paired by seed with 0:"
+   OR NOT out MATCHES "difference -0.2000 over 6 pairs")
+  message(FATAL_ERROR "the sweep does not print its paired comparison:\n${out}")
+endif()
+if(NOT EXISTS ${OUT}/plots/mean_coverage_vs_network.loss_probability_paired.png)
+  message(FATAL_ERROR "missing the paired plot")
+endif()

@@ -57,7 +57,54 @@ TEST(sweep_outputs, writes_plots_only_for_parameters_that_vary_and_metrics_with_
   EXPECT_TRUE(std::filesystem::exists(dir / "plots" / "handoffs_vs_network.loss_probability.png"));
   EXPECT_FALSE(std::filesystem::exists(dir / "plots" / "ratio_vs_network.loss_probability.png"));
   EXPECT_FALSE(std::filesystem::exists(dir / "plots" / "mean_coverage_vs_tasks.0.note.png"));
-  EXPECT_EQ(written.size(), 4u);
+  // No run at 0.2 has metrics, so nothing pairs and no paired plot is drawn.
+  EXPECT_TRUE(std::filesystem::exists(dir / "paired.csv"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "plots" /
+                                       "mean_coverage_vs_network.loss_probability_paired.png"));
+  EXPECT_EQ(written.size(), 5u);
+}
+
+// Two seeds at each of two values, both complete: the paired outputs.
+sweep_results paired_example() {
+  sweep_results r;
+  r.scenario = "s.yaml";
+  r.seeds = 2;
+  r.parameters = {{"controller.strategy", {"paper", "oracle"}}};
+  auto summary = [](double coverage) { return nlohmann::json{{"mean_coverage", coverage}}; };
+  r.runs = {{"paper__seed=1", {"paper"}, 1, 0, 1.0, summary(0.25)},
+            {"paper__seed=2", {"paper"}, 2, 0, 1.0, summary(0.5)},
+            {"oracle__seed=1", {"oracle"}, 1, 0, 1.0, summary(0.75)},
+            {"oracle__seed=2", {"oracle"}, 2, 0, 1.0, summary(0.5)}};
+  return r;
+}
+
+TEST(sweep_outputs, paired_csv_and_json_compare_each_value_with_the_first_by_seed) {
+  // oracle - paper: +0.5 and 0: mean 0.25, sd 0.353553, SE 0.25, t(0.975, 1) = 12.706.
+  EXPECT_EQ(paired_csv(paired_example()),
+            "metric,parameter,value,baseline,pairs,mean_difference,standard_error,ci95_low,"
+            "ci95_high,higher,lower,equal,equal_within,sign_test_p\n"
+            "mean_coverage,controller.strategy,oracle,paper,2,0.25,0.25,-2.9265,3.4265,1,0,1,0,"
+            "1\n");
+  const auto j = sweep_json(paired_example());
+  const auto& row = j["paired"]["mean_coverage"]["controller.strategy"];
+  ASSERT_EQ(row.size(), 1u);
+  EXPECT_EQ(row[0]["value"], "oracle");
+  EXPECT_EQ(row[0]["baseline"], "paper");
+  EXPECT_EQ(row[0]["pairs"], 2);
+  EXPECT_NEAR(row[0]["mean_difference"].get<double>(), 0.25, 1e-12);
+  EXPECT_NEAR(row[0]["ci95_high"].get<double>(), 3.4265, 1e-12);
+  EXPECT_EQ(row[0]["higher"], 1);
+  EXPECT_EQ(row[0]["equal"], 1);
+  EXPECT_DOUBLE_EQ(row[0]["sign_test_p"].get<double>(), 1.0);
+}
+
+TEST(sweep_outputs, draws_the_paired_plot_where_runs_pair) {
+  const auto dir = std::filesystem::path(testing::TempDir()) / "sweep_outputs_paired_test";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  write_sweep_outputs(dir, paired_example());
+  EXPECT_TRUE(
+      std::filesystem::exists(dir / "plots" / "mean_coverage_vs_controller.strategy_paired.png"));
 }
 
 }  // namespace
