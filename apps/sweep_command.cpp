@@ -168,6 +168,7 @@ class sweep {
     results.parameters = parameters_;
     results.seeds = args_.seeds;
     results.equal_within = args_.equal_within;
+    results.compare = args_.compare;
     std::size_t failed = 0;
     std::size_t missing = 0;
     for (const auto& planned : runs_) {
@@ -189,9 +190,9 @@ class sweep {
     const auto written = report::write_sweep_outputs(dir_, results);
     print_comparisons(results);
     std::cout << fmt::format(
-        "argus sweep: {} runs, {} failed, {} not done; wrote {}, {} and {} plots\n", runs_.size(),
-        failed, missing, (dir_ / "sweep.csv").string(), (dir_ / "paired.csv").string(),
-        written.size() - 3);
+        "argus sweep: {} runs, {} failed, {} not done; wrote {}, {}, {} and {} plots\n",
+        runs_.size(), failed, missing, (dir_ / "sweep.csv").string(),
+        (dir_ / "paired.csv").string(), (dir_ / "sweep.html").string(), written.size() - 4);
     if (interrupted) {
       std::cerr << "argus sweep: interrupted; the same command resumes it, redoing only the "
                    "runs without a complete metrics.json\n";

@@ -6,6 +6,7 @@
 #include "fmt/format.h"
 #include "report/binary_file.hpp"
 #include "report/paired_differences.hpp"
+#include "report/sweep_page.hpp"
 
 namespace argus::report {
 
@@ -175,41 +176,42 @@ std::vector<std::filesystem::path> write_sweep_outputs(const std::filesystem::pa
   written.push_back(dir / "sweep.json");
   write_file(dir / "paired.csv", paired_csv(results));
   written.push_back(dir / "paired.csv");
-  const auto plots = dir / "plots";
+  std::vector<report_image> plots;
+  auto add_plot = [&](std::string file, std::string caption, std::vector<unsigned char> png) {
+    std::filesystem::create_directories(dir / "plots");
+    write_file(dir / "plots" / file, png);
+    written.push_back(dir / "plots" / file);
+    plots.push_back({"plots/" + file, std::move(caption), std::move(png), {}});
+  };
   for (const auto& metric : results.metric_names()) {
     for (std::size_t k = 0; k < results.parameters.size(); ++k) {
       const auto& parameter = results.parameters[k];
-      if (parameter.values.size() < 2) continue;
+      if (!compared(parameter)) continue;
       const auto points = results.metric_points(metric, k);
       if (std::none_of(points.begin(), points.end(),
                        [](const metric_point& p) { return p.metric.count > 0; }))
         continue;  // null in every run (undefined, e.g. a ratio to zero): nothing to draw
-      std::filesystem::create_directories(plots);
-      const auto file =
-          plots / (file_name_part(metric) + "_vs_" + file_name_part(parameter.key) + ".png");
-      write_file(file,
-                 render_metric_plot(fmt::format("{} vs {} (mean, 95% CI)", metric, parameter.key),
-                                    parameter.key, points));
-      written.push_back(file);
+      const auto name = file_name_part(metric) + "_vs_" + file_name_part(parameter.key);
+      add_plot(name + ".png", metric + " vs " + parameter.key,
+               render_metric_plot(fmt::format("{} vs {} (mean, 95% CI)", metric, parameter.key),
+                                  parameter.key, points));
       // The same against the baseline, run by run: the baseline at 0, each other value at its
       // mean paired difference.
-      const auto differences = paired_differences(results, metric, k);
       std::vector<metric_point> paired_points{{parameter.values.front(), {}}};
-      for (const auto& d : differences) {
+      for (const auto& d : paired_differences(results, metric, k)) {
         paired_points.push_back({d.value, d.difference});
         paired_points.front().metric.count =
             std::max(paired_points.front().metric.count, d.difference.count);
       }
       if (paired_points.front().metric.count == 0) continue;
-      const auto paired_file =
-          plots / (file_name_part(metric) + "_vs_" + file_name_part(parameter.key) + "_paired.png");
-      write_file(paired_file,
-                 render_metric_plot(fmt::format("{} minus at {}, paired by seed (mean, 95% CI)",
-                                                metric, parameter.values.front()),
-                                    parameter.key, paired_points));
-      written.push_back(paired_file);
+      add_plot(name + "_paired.png", metric + " vs " + parameter.key + ", paired",
+               render_metric_plot(fmt::format("{} minus at {}, paired by seed (mean, 95% CI)",
+                                              metric, parameter.values.front()),
+                                  parameter.key, paired_points));
     }
   }
+  write_file(dir / "sweep.html", render_sweep_page(results, plots));
+  written.push_back(dir / "sweep.html");
   return written;
 }
 

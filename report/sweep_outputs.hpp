@@ -25,9 +25,10 @@ std::string paired_csv(const sweep_results& results);
 /// paired.csv (`paired`).
 nlohmann::json sweep_json(const sweep_results& results);
 
-/// Writes `dir`/sweep.csv, `dir`/sweep.json, `dir`/paired.csv, and for every metric with a
-/// value in some run and every parameter with two values or more `dir`/plots/<metric>_vs_<key>.png
-/// and, where some pair has the metric, <metric>_vs_<key>_paired.png; returns the files written.
+/// Writes `dir`/sweep.csv, `dir`/sweep.json, `dir`/paired.csv, for every metric with a value
+/// in some run and every parameter with two values or more `dir`/plots/<metric>_vs_<key>.png
+/// and, where some pair has the metric, <metric>_vs_<key>_paired.png, and last `dir`/sweep.html
+/// (sweep_page.hpp); returns the files written.
 std::vector<std::filesystem::path> write_sweep_outputs(const std::filesystem::path& dir,
                                                        const sweep_results& results);
 

@@ -39,6 +39,8 @@ struct sweep_results {
   std::vector<sweep_run> runs;
   /// Paired differences within this of 0 count as neither higher nor lower (`--equal-within`).
   double equal_within = 0.0;
+  /// The metric the sweep leads with (`--compare`).
+  std::string compare = "mean_coverage";
 
   /// The numeric fields of the runs' summaries, by name.
   std::vector<std::string> metric_names() const;

@@ -61,7 +61,8 @@ TEST(sweep_outputs, writes_plots_only_for_parameters_that_vary_and_metrics_with_
   EXPECT_TRUE(std::filesystem::exists(dir / "paired.csv"));
   EXPECT_FALSE(std::filesystem::exists(dir / "plots" /
                                        "mean_coverage_vs_network.loss_probability_paired.png"));
-  EXPECT_EQ(written.size(), 5u);
+  EXPECT_TRUE(std::filesystem::exists(dir / "sweep.html"));
+  EXPECT_EQ(written.size(), 6u);
 }
 
 // Two seeds at each of two values, both complete: the paired outputs.
