@@ -330,6 +330,14 @@ nlohmann::json mean_over(const std::vector<task_metrics>& tasks, Pick pick) {
   return n > 0 ? nlohmann::json(sum / n) : nlohmann::json(nullptr);
 }
 
+// The least-covered task's coverage: a run serves all its tasks (Fig. 19) only when this does.
+nlohmann::json min_coverage(const std::vector<task_metrics>& tasks) {
+  if (tasks.empty()) return nullptr;
+  double least = tasks.front().coverage;
+  for (const auto& m : tasks) least = std::min(least, m.coverage);
+  return least;
+}
+
 }  // namespace
 
 nlohmann::json metrics_json(const config::scenario& scenario, const evaluation& result,
@@ -349,6 +357,7 @@ nlohmann::json metrics_json(const config::scenario& scenario, const evaluation& 
        mean_over(t, [](const auto& m) { return std::optional<double>(m.coverage); })},
       {"mean_coverage_iou50",
        mean_over(t, [](const auto& m) { return std::optional<double>(m.coverage_iou50); })},
+      {"min_coverage", min_coverage(t)},
       {"mean_oracle_bound",
        mean_over(t, [](const auto& m) { return std::optional<double>(m.oracle_bound); })},
       {"mean_coverage_of_oracle", mean_over(t, [](const auto& m) { return m.coverage_of_oracle; })},

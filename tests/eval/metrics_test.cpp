@@ -165,5 +165,20 @@ TEST_F(trace, the_json_names_every_figure_and_the_summary_averages_tasks) {
   EXPECT_NEAR(j["summary"]["mean_uncovered_other_person"].get<double>(), 0.2, 1e-9);
 }
 
+TEST_F(trace, the_summary_names_the_least_covered_task) {
+  auto result = evaluate(scenario, *station, log, events, 100);
+  EXPECT_NEAR(metrics_json(scenario, result, 2.0, 10.0)["summary"]["min_coverage"].get<double>(),
+              0.7, 1e-9);
+  auto second = result.tasks.at(0);
+  second.task = 1;
+  second.coverage = 0.25;
+  result.tasks.push_back(second);
+  const auto j = metrics_json(scenario, result, 2.0, 10.0);
+  EXPECT_NEAR(j["summary"]["min_coverage"].get<double>(), 0.25, 1e-9);
+  EXPECT_NEAR(j["summary"]["mean_coverage"].get<double>(), 0.475, 1e-9);
+  result.tasks.clear();
+  EXPECT_TRUE(metrics_json(scenario, result, 2.0, 10.0)["summary"]["min_coverage"].is_null());
+}
+
 }  // namespace
 }  // namespace argus::eval
