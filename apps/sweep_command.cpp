@@ -210,6 +210,22 @@ class sweep {
       return;
     }
     auto signed_text = [](double v) { return fmt::format("{:+.4f}", v); };
+    if (std::none_of(parameters_.begin(), parameters_.end(),
+                     [](const auto& p) { return p.values.size() >= 2; })) {
+      // One point of the grid: its runs' mean.
+      std::vector<double> sample;
+      for (const auto& run : results.runs)
+        if (run.summary.is_object())
+          if (auto it = run.summary.find(args_.compare); it != run.summary.end() && it->is_number())
+            sample.push_back(it->get<double>());
+      const auto m = report::mean_with_ci95(sample);
+      std::cout << fmt::format("{}: n={} mean {:.4f}", args_.compare, m.count, m.mean);
+      if (m.half_width)
+        std::cout << fmt::format(" (95% CI {:.4f} to {:.4f})", m.mean - *m.half_width,
+                                 m.mean + *m.half_width);
+      std::cout << '\n';
+      return;
+    }
     for (std::size_t k = 0; k < parameters_.size(); ++k) {
       if (parameters_[k].values.size() < 2) continue;
       std::cout << fmt::format("{} by {}, each value paired by seed with {}:\n", args_.compare,
