@@ -215,9 +215,7 @@ class sweep {
       // One point of the grid: its runs' mean.
       std::vector<double> sample;
       for (const auto& run : results.runs)
-        if (run.summary.is_object())
-          if (auto it = run.summary.find(args_.compare); it != run.summary.end() && it->is_number())
-            sample.push_back(it->get<double>());
+        if (const auto m = run.metric(args_.compare)) sample.push_back(*m);
       const auto m = report::mean_with_ci95(sample);
       std::cout << fmt::format("{}: n={} mean {:.4f}", args_.compare, m.count, m.mean);
       if (m.half_width)

@@ -14,6 +14,21 @@ struct mean_interval {
   std::optional<double> half_width;
   /// s / sqrt(n), the standard error of the mean; nothing for a sample of one.
   std::optional<double> standard_error;
+
+  /// The mean; nothing for an empty sample.
+  std::optional<double> defined_mean() const {
+    if (count == 0) return std::nullopt;
+    return mean;
+  }
+  /// The interval's ends; nothing for a sample of one or none.
+  std::optional<double> low() const {
+    if (!half_width) return std::nullopt;
+    return mean - *half_width;
+  }
+  std::optional<double> high() const {
+    if (!half_width) return std::nullopt;
+    return mean + *half_width;
+  }
 };
 
 /// mean_interval of `values`; count 0 and mean 0 for an empty sample.

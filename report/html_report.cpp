@@ -81,25 +81,6 @@ std::string key_value_table(const nlohmann::json& object) {
   return html + "</table>\n";
 }
 
-std::string images_section(const std::vector<report_image>& images) {
-  std::string html;
-  for (const auto& image : images) {
-    html += fmt::format(
-        "<figure><img src=\"data:image/png;base64,{}\" alt=\"{}\"><figcaption>{}: {}"
-        "</figcaption>",
-        base64(image.png), html_escape(image.caption), html_escape(image.file),
-        html_escape(image.caption));
-    if (!image.details.empty()) {
-      html += fmt::format("<details><summary>{} {}</summary><ol>", image.details.size(),
-                          image.details.size() == 1 ? "frame" : "frames");
-      for (const auto& line : image.details) html += "<li>" + html_escape(line) + "</li>";
-      html += "</ol></details>";
-    }
-    html += "</figure>\n";
-  }
-  return html;
-}
-
 std::string metrics_section(const nlohmann::json& metrics) {
   if (!metrics.is_object()) return "<p>No metrics.json in this run's folder.</p>\n";
   std::string html;
@@ -158,6 +139,25 @@ std::string html_escape(const std::string& text) {
   return out;
 }
 
+std::string html_figures(const std::vector<report_image>& images) {
+  std::string html;
+  for (const auto& image : images) {
+    html += fmt::format(
+        "<figure><img src=\"data:image/png;base64,{}\" alt=\"{}\"><figcaption>{}: {}"
+        "</figcaption>",
+        base64(image.png), html_escape(image.caption), html_escape(image.file),
+        html_escape(image.caption));
+    if (!image.details.empty()) {
+      html += fmt::format("<details><summary>{} {}</summary><ol>", image.details.size(),
+                          image.details.size() == 1 ? "frame" : "frames");
+      for (const auto& line : image.details) html += "<li>" + html_escape(line) + "</li>";
+      html += "</ol></details>";
+    }
+    html += "</figure>\n";
+  }
+  return html;
+}
+
 std::string render_html_report(const html_report_input& input) {
   std::string html = fmt::format(
       "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
@@ -166,7 +166,7 @@ std::string render_html_report(const html_report_input& input) {
       html_escape(input.title), report_style, report_error_catcher);
   if (input.run_summary.is_object()) html += "<h2>Run</h2>\n" + key_value_table(input.run_summary);
   html += "<h2>Metrics</h2>\n" + metrics_section(input.metrics);
-  if (!input.images.empty()) html += "<h2>Pictures</h2>\n" + images_section(input.images);
+  if (!input.images.empty()) html += "<h2>Pictures</h2>\n" + html_figures(input.images);
   html += "<h2>Event log</h2>\n";
   if (input.events != nullptr) {
     if (input.events->events.size() > input.max_events)

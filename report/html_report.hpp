@@ -40,6 +40,10 @@ struct html_report_input {
 /// the browser test reads.
 std::string render_html_report(const html_report_input& input);
 
+/// Each image as a <figure>, inlined (base64 `data:` URI), captioned "file: caption", its
+/// details folded beneath it: report.html's pictures, and sweep.html's plots.
+std::string html_figures(const std::vector<report_image>& images);
+
 /// `text` with &, <, >, " and ' escaped for HTML.
 std::string html_escape(const std::string& text);
 

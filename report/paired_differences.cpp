@@ -9,13 +9,6 @@ namespace argus::report {
 
 namespace {
 
-std::optional<double> metric_of(const sweep_run& run, const std::string& metric) {
-  if (!run.summary.is_object()) return std::nullopt;
-  const auto it = run.summary.find(metric);
-  if (it == run.summary.end() || !it->is_number()) return std::nullopt;
-  return it->get<double>();
-}
-
 // What pairs two runs: the seed and the values of every parameter but the one compared.
 struct pair_key {
   std::uint64_t seed = 0;
@@ -55,13 +48,13 @@ std::vector<paired_difference> paired_differences(const sweep_results& results,
   std::map<pair_key, double> baseline;
   for (const auto& run : results.runs)
     if (run.values.at(parameter_index) == values.front())
-      if (const auto m = metric_of(run, metric)) baseline.emplace(key_of(run, parameter_index), *m);
+      if (const auto m = run.metric(metric)) baseline.emplace(key_of(run, parameter_index), *m);
   for (std::size_t v = 1; v < values.size(); ++v) {
     paired_difference d{values[v], values.front(), {}, 0, 0, 0, 1.0};
     std::vector<double> differences;
     for (const auto& run : results.runs) {
       if (run.values.at(parameter_index) != values[v]) continue;
-      const auto m = metric_of(run, metric);
+      const auto m = run.metric(metric);
       const auto partner = baseline.find(key_of(run, parameter_index));
       if (!m || partner == baseline.end()) continue;
       const double difference = *m - partner->second;

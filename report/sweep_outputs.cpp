@@ -38,21 +38,6 @@ nlohmann::json number_or_null(const std::optional<double>& value) {
   return value ? nlohmann::json(*value) : nlohmann::json();
 }
 
-std::optional<double> ci95_low(const mean_interval& m) {
-  if (!m.half_width) return std::nullopt;
-  return m.mean - *m.half_width;
-}
-
-std::optional<double> ci95_high(const mean_interval& m) {
-  if (!m.half_width) return std::nullopt;
-  return m.mean + *m.half_width;
-}
-
-std::optional<double> mean_of(const mean_interval& m) {
-  if (m.count == 0) return std::nullopt;
-  return m.mean;
-}
-
 std::string optional_text(const std::optional<double>& value) {
   return value ? fmt::format("{}", *value) : std::string{};
 }
@@ -72,13 +57,13 @@ std::string paired_csv(const sweep_results& results) {
     for (std::size_t k = 0; k < results.parameters.size(); ++k) {
       if (!compared(results.parameters[k])) continue;
       for (const auto& d : paired_differences(results, metric, k)) {
-        csv += fmt::format(
-            "{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", csv_field(metric),
-            csv_field(results.parameters[k].key), csv_field(d.value), csv_field(d.baseline),
-            d.difference.count, optional_text(mean_of(d.difference)),
-            optional_text(d.difference.standard_error), optional_text(ci95_low(d.difference)),
-            optional_text(ci95_high(d.difference)), d.higher, d.lower, d.equal,
-            results.equal_within, d.sign_test_p);
+        csv += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", csv_field(metric),
+                           csv_field(results.parameters[k].key), csv_field(d.value),
+                           csv_field(d.baseline), d.difference.count,
+                           optional_text(d.difference.defined_mean()),
+                           optional_text(d.difference.standard_error),
+                           optional_text(d.difference.low()), optional_text(d.difference.high()),
+                           d.higher, d.lower, d.equal, results.equal_within, d.sign_test_p);
       }
     }
   }
@@ -131,14 +116,9 @@ nlohmann::json sweep_json(const sweep_results& results) {
       auto& rows = statistics[metric][results.parameters[k].key] = nlohmann::json::array();
       for (const auto& point : results.metric_points(metric, k)) {
         nlohmann::json row{{"value", point.value}, {"n", point.metric.count}};
-        row["mean"] = point.metric.count > 0 ? nlohmann::json(point.metric.mean) : nlohmann::json();
-        if (point.metric.half_width) {
-          row["ci95_low"] = point.metric.mean - *point.metric.half_width;
-          row["ci95_high"] = point.metric.mean + *point.metric.half_width;
-        } else {
-          row["ci95_low"] = nullptr;
-          row["ci95_high"] = nullptr;
-        }
+        row["mean"] = number_or_null(point.metric.defined_mean());
+        row["ci95_low"] = number_or_null(point.metric.low());
+        row["ci95_high"] = number_or_null(point.metric.high());
         rows.push_back(std::move(row));
       }
     }
@@ -152,10 +132,10 @@ nlohmann::json sweep_json(const sweep_results& results) {
         rows.push_back({{"value", d.value},
                         {"baseline", d.baseline},
                         {"pairs", d.difference.count},
-                        {"mean_difference", number_or_null(mean_of(d.difference))},
+                        {"mean_difference", number_or_null(d.difference.defined_mean())},
                         {"standard_error", number_or_null(d.difference.standard_error)},
-                        {"ci95_low", number_or_null(ci95_low(d.difference))},
-                        {"ci95_high", number_or_null(ci95_high(d.difference))},
+                        {"ci95_low", number_or_null(d.difference.low())},
+                        {"ci95_high", number_or_null(d.difference.high())},
                         {"higher", d.higher},
                         {"lower", d.lower},
                         {"equal", d.equal},

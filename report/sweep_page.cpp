@@ -4,7 +4,6 @@
 #include <optional>
 
 #include "fmt/format.h"
-#include "report/base64.hpp"
 #include "report/html_report_assets.hpp"
 #include "report/paired_differences.hpp"
 
@@ -21,28 +20,16 @@ std::string text_cell(const std::string& text) {
   return "<td>" + html_escape(text) + "</td>";
 }
 
-std::optional<double> mean_of(const mean_interval& m) {
-  if (m.count == 0) return std::nullopt;
-  return m.mean;
-}
-
 // A difference's interval shows its signs; a mean's does not.
 std::string interval_cell(const mean_interval& m, bool difference) {
   if (!m.half_width) return "<td>&ndash;</td>";
   return fmt::format(fmt::runtime(difference ? "<td class=\"number\">{:+.4g} to {:+.4g}</td>"
                                              : "<td class=\"number\">{:.4g} to {:.4g}</td>"),
-                     m.mean - *m.half_width, m.mean + *m.half_width);
+                     *m.low(), *m.high());
 }
 
 bool clear_of_zero(const mean_interval& m) {
-  return m.half_width && (m.mean - *m.half_width > 0.0 || m.mean + *m.half_width < 0.0);
-}
-
-std::string figure(const report_image& image) {
-  return fmt::format(
-      "<figure><img src=\"data:image/png;base64,{}\" alt=\"{}\"><figcaption>{}</figcaption>"
-      "</figure>\n",
-      base64(image.png), html_escape(image.caption), html_escape(image.file));
+  return m.half_width && (*m.low() > 0.0 || *m.high() < 0.0);
 }
 
 std::string grid_section(const sweep_results& results) {
@@ -78,7 +65,7 @@ std::string comparison_table(const sweep_results& results, std::size_t k) {
   for (std::size_t v = 0; v < points.size(); ++v) {
     const auto& m = points[v].metric;
     html += "<tr>" + text_cell(points[v].value) +
-            fmt::format("<td class=\"number\">{}</td>", m.count) + number_cell(mean_of(m)) +
+            fmt::format("<td class=\"number\">{}</td>", m.count) + number_cell(m.defined_mean()) +
             interval_cell(m, false);
     if (v == 0) {
       html += "<td colspan=\"6\">baseline</td></tr>\n";
@@ -86,8 +73,8 @@ std::string comparison_table(const sweep_results& results, std::size_t k) {
     }
     const auto& d = differences[v - 1];
     html += fmt::format("<td class=\"number\">{}</td>", d.difference.count) +
-            number_cell(mean_of(d.difference), "{:+.4g}") + interval_cell(d.difference, true) +
-            number_cell(d.difference.standard_error) +
+            number_cell(d.difference.defined_mean(), "{:+.4g}") +
+            interval_cell(d.difference, true) + number_cell(d.difference.standard_error) +
             fmt::format("<td class=\"number\">{} / {} / {}</td>", d.higher, d.lower, d.equal) +
             number_cell(d.sign_test_p, "{:.3g}") + "</tr>\n";
   }
@@ -105,7 +92,8 @@ std::string paired_table(const sweep_results& results, std::size_t k) {
       html += clear_of_zero(d.difference) ? "<tr class=\"clear\">" : "<tr>";
       html += text_cell(metric) + text_cell(d.value) +
               fmt::format("<td class=\"number\">{}</td>", d.difference.count) +
-              number_cell(mean_of(d.difference), "{:+.4g}") + interval_cell(d.difference, true) +
+              number_cell(d.difference.defined_mean(), "{:+.4g}") +
+              interval_cell(d.difference, true) +
               fmt::format("<td class=\"number\">{} / {} / {}</td>", d.higher, d.lower, d.equal) +
               number_cell(d.sign_test_p, "{:.3g}") + "</tr>\n";
     }
@@ -125,24 +113,20 @@ std::string runs_table(const sweep_results& results) {
     html += run.exit_status ? fmt::format("<td class=\"number\">{}</td>", *run.exit_status)
                             : std::string("<td>not done</td>");
     html += run.exit_status ? number_cell(run.wall_s, "{:.1f}") : std::string("<td></td>");
-    std::optional<double> value;
-    if (run.summary.is_object())
-      if (auto it = run.summary.find(results.compare); it != run.summary.end() && it->is_number())
-        value = it->get<double>();
-    html += number_cell(value) + "</tr>\n";
+    html += number_cell(run.metric(results.compare)) + "</tr>\n";
   }
   return html + "</table></div>\n";
 }
 
-// The plots of `metric` against `key` (the pooled one, then the paired one), in that order.
-std::vector<const report_image*> plots_of(const std::vector<report_image>& plots,
-                                          const std::string& metric, const std::string& key) {
-  std::vector<const report_image*> out;
-  for (const auto& p : plots)
-    if (p.caption == metric + " vs " + key) out.push_back(&p);
-  for (const auto& p : plots)
-    if (p.caption == metric + " vs " + key + ", paired") out.push_back(&p);
-  return out;
+// The figures of `metric` against `key`: the pooled plot, then the paired one.
+std::string figures_of(const std::vector<report_image>& plots, const std::string& metric,
+                       const std::string& key) {
+  const std::string pooled = metric + " vs " + key;
+  std::vector<report_image> chosen;
+  for (const auto& wanted : {pooled, pooled + ", paired"})
+    for (const auto& p : plots)
+      if (p.caption == wanted) chosen.push_back(p);
+  return html_figures(chosen);
 }
 
 }  // namespace
@@ -174,7 +158,7 @@ std::string render_sweep_page(const sweep_results& results,
         "<p>Each value's mean over its runs, and its runs paired with the baseline's of the "
         "same seed and the same other values.</p>\n" +
         comparison_table(results, k);
-    for (const auto* image : plots_of(plots, results.compare, key)) html += figure(*image);
+    html += figures_of(plots, results.compare, key);
   }
   for (const auto k : varied) {
     const auto& key = results.parameters[k].key;
@@ -185,8 +169,7 @@ std::string render_sweep_page(const sweep_results& results,
     html += paired_table(results, k);
     html += "<details><summary>Every metric's plots</summary>\n";
     for (const auto& metric : metrics)
-      if (metric != results.compare)
-        for (const auto* image : plots_of(plots, metric, key)) html += figure(*image);
+      if (metric != results.compare) html += figures_of(plots, metric, key);
     html += "</details>\n";
   }
   html += "<h2>Runs</h2>\n" + runs_table(results);

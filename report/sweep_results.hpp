@@ -29,6 +29,9 @@ struct sweep_run {
   double wall_s = 0.0;
   /// metrics.json's "summary" object; null when the run left none.
   nlohmann::json summary;
+
+  /// The summary's `metric`; nothing where the run has none or it is not a number (null).
+  std::optional<double> metric(const std::string& name) const;
 };
 
 /// A whole sweep: its grid and every run.
