@@ -23,6 +23,7 @@
 #include "sensing/operator_view.hpp"
 #include "sensing/pixel_sensor.hpp"
 #include "sensing/task_targets.hpp"
+#include "vision/floor_estimate.hpp"
 #include "vision/imaging_model.hpp"
 
 namespace argus::actors {
@@ -100,6 +101,8 @@ struct camera_node_state {
   // sensing.group_geometry and sensing.reappearance: ground_truth (instruments).
   bool geometry_hints = false;
   bool reappearance_hints = false;
+  // sensing.group_geometry: calibrated: the rules of the group's floor estimates.
+  vision::floor_rules floor;
 
   // The turn in progress (it may wait for a rendered frame).
   std::optional<tick_context> ctx;
@@ -429,6 +432,29 @@ sensing::emulated_looks::truth_check truth_id_check(camera_node_state& st) {
   return [&st](controller::task_id task, int id) { return st.log->target_of(task) == id; };
 }
 
+// sensing.group_geometry: calibrated, emulated sensing: a find is refused where the group's
+// estimate says she cannot be, by the floor point of the pedestrian's projected body box (the
+// emulated sensor's boxes are that box, jittered).
+sensing::emulated_looks::truth_check position_id_check(camera_node_state& st,
+                                                       const world::snapshot& frame,
+                                                       sensing::emulated_looks::truth_check inner);
+
+// The task whose target this node looks for without holding her: bidding with nothing found
+// in this frame, or performing the task with its tracker in Wait or Search; none otherwise.
+std::optional<controller::task_id> looked_for_unheld(const camera_node_state& st, bool found_now) {
+  switch (st.controller->state()) {
+    case controller::node_state::performing_task:
+      if (st.controller->tracking() == vision::tracking_state::track) return std::nullopt;
+      return st.controller->task();
+    case controller::node_state::computing_relevance:
+      if (found_now || st.looks.empty()) return std::nullopt;
+      return st.looks.front().task;
+    case controller::node_state::idle:
+      break;
+  }
+  return std::nullopt;
+}
+
 // sensing.group_geometry and sensing.reappearance: ground_truth (instruments): a node that looks
 // for a task's target without holding her, bidding with nothing found yet or with its tracker in
 // Wait or Search, is pointed, zoomed, at whom its group's boxes were on in the last frame (the
@@ -437,19 +463,7 @@ sensing::emulated_looks::truth_check truth_id_check(camera_node_state& st) {
 // node does.
 void aim_from_group(camera_node_state& st, const world::snapshot& frame, bool found_now) {
   if (!st.world || !st.world->sightings) return;
-  std::optional<controller::task_id> task;
-  switch (st.controller->state()) {
-    case controller::node_state::performing_task:
-      if (st.controller->tracking() == vision::tracking_state::track) return;
-      task = st.controller->task();
-      break;
-    case controller::node_state::computing_relevance:
-      if (found_now || st.looks.empty()) return;
-      task = st.looks.front().task;
-      break;
-    case controller::node_state::idle:
-      return;
-  }
+  const auto task = looked_for_unheld(st, found_now);
   if (!task) return;
   const auto last = static_cast<std::int64_t>(frame.tick()) - 1;
   const auto who = st.world->sightings->aim(last, *task, st.camera_id, st.geometry_hints,
@@ -462,6 +476,79 @@ void aim_from_group(camera_node_state& st, const world::snapshot& frame, bool fo
   st.head->command(eval::oracle_pose(st.settings, frame, *who));
 }
 
+// sensing.group_geometry: calibrated: where this node's calibrated camera puts `box` on the
+// floor.
+std::optional<vision::floor_estimate> floor_of(const camera_node_state& st, const cv::Rect2d& box,
+                                               std::int64_t tick) {
+  return vision::floor_estimate_of(view_of(st), box, tick, st.floor);
+}
+
+// The group's estimate of task `task`'s target before the frame of `tick`, while trusted.
+std::optional<vision::floor_estimate> group_estimate(const camera_node_state& st,
+                                                     controller::task_id task, std::int64_t tick) {
+  if (!st.world || !st.world->positions) return std::nullopt;
+  auto e = st.world->positions->latest(task, tick - 1);
+  if (!e || (tick - e->tick) * st.tick_length.count() > st.floor.trusted_s) return std::nullopt;
+  return e;
+}
+
+// A find is refused where the group's estimate says she cannot be.
+sensing::pixel_sensor::truth_check position_check(camera_node_state& st,
+                                                  const world::snapshot& frame,
+                                                  sensing::pixel_sensor::truth_check inner) {
+  if (!st.world || !st.world->positions) return inner;
+  const auto tick = static_cast<std::int64_t>(frame.tick());
+  return [&st, tick, inner = std::move(inner)](controller::task_id task, const cv::Rect& box) {
+    if (inner && !inner(task, box)) return false;
+    const auto expected = group_estimate(st, task, tick);
+    if (!expected) return true;
+    const auto found = floor_of(st, cv::Rect2d(box), tick);
+    return found && vision::could_be(*found, *expected,
+                                     (tick - expected->tick) * st.tick_length.count(), st.floor);
+  };
+}
+
+sensing::emulated_looks::truth_check position_id_check(camera_node_state& st,
+                                                       const world::snapshot& frame,
+                                                       sensing::emulated_looks::truth_check inner) {
+  if (!st.world || !st.world->positions) return inner;
+  const auto tick = static_cast<std::int64_t>(frame.tick());
+  return [&st, &frame, tick, inner = std::move(inner)](controller::task_id task, int id) {
+    if (inner && !inner(task, id)) return false;
+    const auto expected = group_estimate(st, task, tick);
+    if (!expected) return true;
+    const auto box = sensing::operator_box(frame, *st.world->station, view_of(st), id);
+    const auto found = box ? floor_of(st, *box, tick) : std::nullopt;
+    return found && vision::could_be(*found, *expected,
+                                     (tick - expected->tick) * st.tick_length.count(), st.floor);
+  };
+}
+
+// What this node, a member of `task`'s group, found for it goes on the board.
+void post_estimates(camera_node_state& st, const world::snapshot& frame) {
+  if (!st.world || !st.world->positions) return;
+  const auto task = st.controller->task();
+  if (!task || st.controller->state() != controller::node_state::performing_task) return;
+  for (const auto& r : st.input.looks) {
+    if (r.task != *task || !r.found) continue;
+    if (auto e = floor_of(st, r.box, static_cast<std::int64_t>(frame.tick())))
+      st.world->positions->put(*task, st.camera_id,
+                               st.controller->role() == controller::group_role::leader, *e);
+  }
+}
+
+// A node that looks for a task's target without holding her is pointed, zoomed, at the group's
+// latest estimate of where she is, where it can reach her.
+void aim_at_estimate(camera_node_state& st, const world::snapshot& frame, bool found_now) {
+  if (!st.world || !st.world->positions) return;
+  const auto task = looked_for_unheld(st, found_now);
+  if (!task) return;
+  const auto e = group_estimate(st, *task, static_cast<std::int64_t>(frame.tick()));
+  if (!e || !eval::reachable(st.settings, *st.world->station, e->where, st.floor.assumed_height_m))
+    return;
+  st.head->command(eval::pose_towards(st.settings, e->where, st.floor.assumed_height_m));
+}
+
 // The second half of a turn, once the frame (if any) is there: sense, decide, act.
 void finish_turn(node_actor* self, const cv::Mat& image) {
   auto& st = self->state;
@@ -469,14 +556,15 @@ void finish_turn(node_actor* self, const cv::Mat& image) {
   const auto snap = std::move(st.snap);
   if (snap && !st.looks.empty()) {
     if (st.pixels && !image.empty()) {
-      st.input.looks =
-          st.pixels->look(image, st.head->state(), st.looks, truth_box_check(st, *snap));
+      st.input.looks = st.pixels->look(image, st.head->state(), st.looks,
+                                       position_check(st, *snap, truth_box_check(st, *snap)));
     } else if (st.emulated) {
-      st.input.looks =
-          st.emulated->look(*snap, *st.world->station, view_of(st), st.looks, truth_id_check(st));
+      st.input.looks = st.emulated->look(*snap, *st.world->station, view_of(st), st.looks,
+                                         position_id_check(st, *snap, truth_id_check(st)));
     }
   }
   take_queries(st, snap.get(), image);
+  if (snap) post_estimates(st, *snap);
   record_frame(st);
   st.eval_snap.reset();
   st.input.pose = st.head->state();
@@ -501,6 +589,7 @@ void finish_turn(node_actor* self, const cv::Mat& image) {
     if (out.command) st.head->command(*out.command);
     st.looks = std::move(out.looks);
     if (snap) aim_from_group(st, *snap, found_now);
+    if (snap) aim_at_estimate(st, *snap, found_now);
   }
   st.head->step(st.tick_length);
   if (st.world && st.world->poses) st.world->poses->put(st.camera_id, ctx.tick(), st.head->state());

@@ -7,6 +7,7 @@
 #include "actors/operator_board.hpp"
 #include "actors/oracle_board.hpp"
 #include "actors/participant_info.hpp"
+#include "actors/position_board.hpp"
 #include "actors/sighting_board.hpp"
 #include "actors/snapshot_board.hpp"
 #include "caf/actor.hpp"
@@ -44,6 +45,9 @@ struct camera_world {
   std::shared_ptr<oracle_board> oracle;
   /// Whom group members' boxes were on (sensing.group_geometry: ground_truth only).
   std::shared_ptr<sighting_board> sightings;
+  /// Where group members' calibrated cameras put their boxes on the floor
+  /// (sensing.group_geometry: calibrated only).
+  std::shared_ptr<position_board> positions;
   /// The operator's live tasks and cancellations (argus serve); null for none.
   std::shared_ptr<operator_board> operators;
   /// Where nodes show the live console their pose, frame and traffic (display only; null for

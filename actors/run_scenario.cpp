@@ -105,9 +105,13 @@ run_outcome run_scenario(const config::scenario& scenario, const run_options& op
   cameras_world->board->record_targets_in(log);
   if (scenario.controller.strategy == config::control_strategy::oracle)
     cameras_world->oracle = std::make_shared<oracle_board>(scenario, world_settings.station, log);
-  else if (scenario.sensing.geometry == config::group_geometry::ground_truth ||
-           scenario.sensing.reappearance == config::reappearance_model::ground_truth)
-    cameras_world->sightings = std::make_shared<sighting_board>();
+  else {
+    if (scenario.sensing.geometry == config::group_geometry::ground_truth ||
+        scenario.sensing.reappearance == config::reappearance_model::ground_truth)
+      cameras_world->sightings = std::make_shared<sighting_board>();
+    if (scenario.sensing.geometry == config::group_geometry::calibrated)
+      cameras_world->positions = std::make_shared<position_board>();
+  }
   world_settings.board = cameras_world->board;
   const auto& live = options.live;
   std::shared_ptr<operator_board> operators;

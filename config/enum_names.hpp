@@ -101,9 +101,10 @@ struct enum_names<unicast_routing> {
 /// Names for the sensing `group_geometry`.
 template <>
 struct enum_names<group_geometry> {
-  static constexpr std::array<enum_entry<group_geometry>, 2> entries{{
+  static constexpr std::array<enum_entry<group_geometry>, 3> entries{{
       {group_geometry::none, "none"},
       {group_geometry::ground_truth, "ground_truth"},
+      {group_geometry::calibrated, "calibrated"},
   }};
 };
 

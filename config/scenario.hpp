@@ -225,8 +225,11 @@ enum class identity_source { appearance, ground_truth };
 /// is pointed, zoomed, at the pedestrian a group member's box was on in the last frame (the
 /// leader's first), if it can reach him. Whom the boxes are on is the evaluation's label, so a
 /// group that follows a stranger points its cameras at the stranger; identity stays each
-/// camera's own.
-enum class group_geometry { none, ground_truth };
+/// camera's own. calibrated: each camera knows its own mounting and pose and puts the box it
+/// holds on the floor; a node looking for her without holding her is pointed at the group's
+/// latest estimate, and finds that cannot be her by that estimate are refused (the paper's
+/// Section V suggestion; docs/protocol.md).
+enum class group_geometry { none, ground_truth, calibrated };
 
 /// Where a node expects the target to reappear once its whole group has lost her
 /// (sensing.reappearance). none, the paper's: nowhere; the node searches its own view.

@@ -51,21 +51,18 @@ std::map<int, std::uint32_t> assign_cameras(const std::vector<config::camera_set
   return out;
 }
 
-vision::ptz_state oracle_pose(const config::camera_settings& camera, const world::snapshot& frame,
-                              int pedestrian, bool zoom) {
+vision::ptz_state pose_towards(const config::camera_settings& camera, const world::vec2& where,
+                               double height_m, bool zoom) {
   const auto limits = vision::ptz_limits::from(camera);
-  vision::ptz_state home{camera.pan_deg, camera.tilt_deg, camera.field_of_view_deg};
-  const auto* who = frame.find(pedestrian);
-  if (who == nullptr) return home;
-  const double dx = who->position.x() - camera.position.x_m;
-  const double dy = who->position.y() - camera.position.y_m;
+  const double dx = where.x() - camera.position.x_m;
+  const double dy = where.y() - camera.position.y_m;
   const double ground = std::hypot(dx, dy);
-  const double rise = who->look.height_m / 2.0 - camera.height_m;
+  const double rise = height_m / 2.0 - camera.height_m;
   const double distance = std::max(0.5, std::hypot(ground, rise));
   const double aspect =
       static_cast<double>(camera.imaging.height_px) / static_cast<double>(camera.imaging.width_px);
   // Vertical field of view that makes her target_share of the frame, then horizontal.
-  const double vertical = 2.0 * std::atan(who->look.height_m / (2.0 * distance * target_share));
+  const double vertical = 2.0 * std::atan(height_m / (2.0 * distance * target_share));
   const double horizontal = 2.0 * std::atan(std::tan(vertical / 2.0) / aspect) / deg;
   double pan = std::atan2(dy, dx) / deg;
   if (!limits.pan_wraps()) {
@@ -75,6 +72,13 @@ vision::ptz_state oracle_pose(const config::camera_settings& camera, const world
   vision::ptz_state wanted{pan, std::atan2(rise, ground) / deg,
                            zoom ? horizontal : camera.field_of_view_deg};
   return limits.clamp(wanted);
+}
+
+vision::ptz_state oracle_pose(const config::camera_settings& camera, const world::snapshot& frame,
+                              int pedestrian, bool zoom) {
+  const auto* who = frame.find(pedestrian);
+  if (who == nullptr) return {camera.pan_deg, camera.tilt_deg, camera.field_of_view_deg};
+  return pose_towards(camera, who->position, who->look.height_m, zoom);
 }
 
 }  // namespace argus::eval

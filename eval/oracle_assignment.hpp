@@ -7,6 +7,7 @@
 
 #include "config/scenario.hpp"
 #include "vision/ptz_camera.hpp"
+#include "world/layout.hpp"
 
 namespace argus::world {
 class snapshot;
@@ -33,6 +34,12 @@ std::map<int, std::uint32_t> assign_cameras(const std::vector<config::camera_set
                                             const world::station& station,
                                             const std::vector<oracle_target>& targets,
                                             const std::map<int, std::uint32_t>& previous);
+
+/// The pose that centres a body `height_m` tall standing at `where` in `camera`'s view, a third
+/// of the frame's height with `zoom`, else at the camera's default field of view; within the
+/// head's limits.
+vision::ptz_state pose_towards(const config::camera_settings& camera, const world::vec2& where,
+                               double height_m, bool zoom = true);
 
 /// The pose that centres pedestrian `pedestrian` of `frame` in `camera`'s view with her body
 /// a third of the frame's height, within the head's limits; the home pose when she is gone.

@@ -18,6 +18,7 @@ endif()
 list(APPEND argus_vision_sources
   ${CMAKE_CURRENT_LIST_DIR}/egl_context.cpp
   ${CMAKE_CURRENT_LIST_DIR}/feed_mosaic.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/floor_estimate.cpp
   ${CMAKE_CURRENT_LIST_DIR}/imaging_model.cpp
   ${CMAKE_CURRENT_LIST_DIR}/pedestrian_mesh.cpp
   ${CMAKE_CURRENT_LIST_DIR}/ptz_camera.cpp

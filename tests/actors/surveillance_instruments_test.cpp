@@ -123,6 +123,20 @@ TEST(surveillance, with_the_groups_geometry_bidders_turn_to_where_the_group_sees
   }
 }
 
+// sensing.group_geometry: calibrated: a queried camera that has not found her is pointed and
+// zoomed at where its group's calibrated cameras put her on the floor (the paper's holds its
+// pose while it looks: the test above), and the run stays the same whatever the thread count
+// (nodes read only earlier frames' estimates). The gate's rule is floor_estimate_test's.
+TEST(surveillance, calibrated_cameras_turn_bidders_to_where_the_group_puts_her) {
+  auto calibrated = station(90.0, "argus_surveil_calibrated");
+  calibrated.sensing.geometry = config::group_geometry::calibrated;
+  const auto first = run_scenario(calibrated, false);
+  EXPECT_GT(bidders_that_zoomed(first, calibrated), 0);
+  const auto reference = events_of(first);
+  calibrated.run.threads = 4;
+  EXPECT_EQ(events_of(run_scenario(calibrated, false)), reference);
+}
+
 // sensing.identity: ground_truth takes away the cameras' mistakes of identity and nothing else:
 // with it no group member's box is ever on someone else while she goes unobserved, and nearly
 // every box found for the task is hers; the same run with the paper's cameras follows others.

@@ -332,6 +332,8 @@ TEST(scenario_loader, nodes_know_nothing_of_each_others_views_unless_told) {
   EXPECT_EQ(parse_scenario("name: a\n", "a.yaml").sensing.geometry, group_geometry::none);
   EXPECT_EQ(parse_scenario("sensing: {group_geometry: ground_truth}\n", "a.yaml").sensing.geometry,
             group_geometry::ground_truth);
+  EXPECT_EQ(parse_scenario("sensing: {group_geometry: calibrated}\n", "a.yaml").sensing.geometry,
+            group_geometry::calibrated);
   const auto problems =
       problems_of([] { parse_scenario("sensing: {group_geometry: learned}\n", "b.yaml"); });
   ASSERT_EQ(problems.size(), 1u);
