@@ -501,7 +501,7 @@ sensing::pixel_sensor::truth_check position_check(camera_node_state& st,
   return [&st, tick, inner = std::move(inner)](controller::task_id task, const cv::Rect& box) {
     if (inner && !inner(task, box)) return false;
     const auto expected = group_estimate(st, task, tick);
-    if (!expected) return true;
+    if (!expected || !expected->confirmed) return true;
     const auto found = floor_of(st, cv::Rect2d(box), tick);
     return found && vision::could_be(*found, *expected,
                                      (tick - expected->tick) * st.tick_length.count(), st.floor);
@@ -516,7 +516,7 @@ sensing::emulated_looks::truth_check position_id_check(camera_node_state& st,
   return [&st, &frame, tick, inner = std::move(inner)](controller::task_id task, int id) {
     if (inner && !inner(task, id)) return false;
     const auto expected = group_estimate(st, task, tick);
-    if (!expected) return true;
+    if (!expected || !expected->confirmed) return true;
     const auto box = sensing::operator_box(frame, *st.world->station, view_of(st), id);
     const auto found = box ? floor_of(st, *box, tick) : std::nullopt;
     return found && vision::could_be(*found, *expected,
@@ -529,11 +529,15 @@ void post_estimates(camera_node_state& st, const world::snapshot& frame) {
   if (!st.world || !st.world->positions) return;
   const auto task = st.controller->task();
   if (!task || st.controller->state() != controller::node_state::performing_task) return;
+  const auto tick = static_cast<std::int64_t>(frame.tick());
   for (const auto& r : st.input.looks) {
     if (r.task != *task || !r.found) continue;
-    if (auto e = floor_of(st, r.box, static_cast<std::int64_t>(frame.tick())))
-      st.world->positions->put(*task, st.camera_id,
-                               st.controller->role() == controller::group_role::leader, *e);
+    auto e = floor_of(st, r.box, tick);
+    if (!e) continue;
+    const auto expected = group_estimate(st, *task, tick);
+    e->confirmed = vision::confirmed_by(expected, !st.world->positions->latest(*task, tick - 1));
+    st.world->positions->put(*task, st.camera_id,
+                             st.controller->role() == controller::group_role::leader, *e);
   }
 }
 

@@ -26,6 +26,10 @@ std::optional<floor_estimate> floor_estimate_of(const camera_view& view, const c
   return floor_estimate{*centre, spread + (feet ? 0.0 : 0.3), tick};
 }
 
+bool confirmed_by(const std::optional<floor_estimate>& expected, bool first_of_task) {
+  return expected ? expected->confirmed : first_of_task;
+}
+
 bool could_be(const floor_estimate& found, const floor_estimate& expected, double age_s,
               const floor_rules& rules) {
   return (found.where - expected.where).norm() <=

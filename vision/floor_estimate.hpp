@@ -18,12 +18,16 @@ struct floor_estimate {
   Eigen::Vector2d where{0.0, 0.0};
   double radius_m = 0.0;
   std::int64_t tick = 0;
+  /// Whether the find it came from was tested against a confirmed estimate (or was the
+  /// operator's pick): only a confirmed estimate refuses finds, so that a group that has lost
+  /// her and taken a stranger does not also refuse her where she is found again.
+  bool confirmed = true;
 };
 
 /// The rules of the estimate: the height assumed for a body whose feet are cut off, how fast
 /// she may have walked since the group's estimate, and the slack on every comparison (a colour
-/// tracker's box is not her silhouette: her boxes' floor points are a metre off at the median,
-/// 2.3 m at the 90th percentile, on Penn Station).
+/// tracker's box is not her silhouette: in a Penn Station run her boxes' floor points were a
+/// metre off at the median, 2.3 m at the 90th percentile; bench/RESULTS.md).
 struct floor_rules {
   double assumed_height_m = 1.7;
   double walking_speed_mps = 2.0;
@@ -38,6 +42,10 @@ struct floor_rules {
 /// (and 0.3 m more for the assumed height). None when the ray never meets that plane.
 std::optional<floor_estimate> floor_estimate_of(const camera_view& view, const cv::Rect2d& box,
                                                 std::int64_t tick, const floor_rules& rules = {});
+
+/// Whether a find is confirmed: when it was tested against `expected`, the group's trusted
+/// estimate, as that estimate was; with none, only the task's first (the operator's pick).
+bool confirmed_by(const std::optional<floor_estimate>& expected, bool first_of_task);
 
 /// Whether a find at `found` can be the pedestrian estimated at `expected`, `age_s` earlier:
 /// within both radii, the slack and the walk she could have made since.

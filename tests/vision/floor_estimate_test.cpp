@@ -73,5 +73,17 @@ TEST(floor_estimate, a_find_can_be_her_within_the_radii_the_slack_and_her_walk) 
   EXPECT_FALSE(could_be(at(16.1), expected, 1.0, rules));
 }
 
+// Once the group has lost her and its estimate is no longer trusted, whoever it takes next is
+// not confirmed, and stays so along the chain of finds tested against him: a group on a
+// stranger does not refuse her where she is found again.
+TEST(floor_estimate, only_a_chain_of_finds_from_the_operators_pick_is_confirmed) {
+  floor_estimate expected{{0.0, 0.0}, 0.5, 0};
+  EXPECT_TRUE(confirmed_by(std::nullopt, true));    // the operator's pick
+  EXPECT_FALSE(confirmed_by(std::nullopt, false));  // after the group's estimate expired
+  EXPECT_TRUE(confirmed_by(expected, false));
+  expected.confirmed = false;
+  EXPECT_FALSE(confirmed_by(expected, false));
+}
+
 }  // namespace
 }  // namespace argus::vision
