@@ -432,13 +432,6 @@ sensing::emulated_looks::truth_check truth_id_check(camera_node_state& st) {
   return [&st](controller::task_id task, int id) { return st.log->target_of(task) == id; };
 }
 
-// sensing.group_geometry: calibrated, emulated sensing: a find is refused where the group's
-// estimate says she cannot be, by the floor point of the pedestrian's projected body box (the
-// emulated sensor's boxes are that box, jittered).
-sensing::emulated_looks::truth_check position_id_check(camera_node_state& st,
-                                                       const world::snapshot& frame,
-                                                       sensing::emulated_looks::truth_check inner);
-
 // The task whose target this node looks for without holding her: bidding with nothing found
 // in this frame, or performing the task with its tracker in Wait or Search; none otherwise.
 std::optional<controller::task_id> looked_for_unheld(const camera_node_state& st, bool found_now) {
@@ -483,59 +476,84 @@ std::optional<vision::floor_estimate> floor_of(const camera_node_state& st, cons
   return vision::floor_estimate_of(view_of(st), box, tick, st.floor);
 }
 
+// The group's estimate `last` (its latest before the frame of `tick`), if still trusted.
+std::optional<vision::floor_estimate> trusted(const camera_node_state& st,
+                                              std::optional<vision::floor_estimate> last,
+                                              std::int64_t tick) {
+  if (!last || (tick - last->tick) * st.tick_length.count() > st.floor.trusted_s)
+    return std::nullopt;
+  return last;
+}
+
 // The group's estimate of task `task`'s target before the frame of `tick`, while trusted.
 std::optional<vision::floor_estimate> group_estimate(const camera_node_state& st,
                                                      controller::task_id task, std::int64_t tick) {
   if (!st.world || !st.world->positions) return std::nullopt;
-  auto e = st.world->positions->latest(task, tick - 1);
-  if (!e || (tick - e->tick) * st.tick_length.count() > st.floor.trusted_s) return std::nullopt;
-  return e;
+  return trusted(st, st.world->positions->latest(task, tick - 1), tick);
 }
 
-// A find is refused where the group's estimate says she cannot be.
+// Whether a find of task `task`'s target in the frame of `tick`, whose box is `box` (none: not
+// in view), can be her by the group's confirmed estimate. The estimate is read once per task
+// and frame, however many candidates the sensor weighs.
+class floor_gate {
+ public:
+  floor_gate(const camera_node_state& st, std::int64_t tick) : st_(st), tick_(tick) {}
+
+  bool admits(controller::task_id task, const std::optional<cv::Rect2d>& box) {
+    auto it = expected_.find(task);
+    if (it == expected_.end()) it = expected_.emplace(task, group_estimate(st_, task, tick_)).first;
+    const auto& expected = it->second;
+    if (!expected || !expected->confirmed) return true;
+    const auto found = box ? floor_of(st_, *box, tick_) : std::nullopt;
+    return found && vision::could_be(*found, *expected,
+                                     (tick_ - expected->tick) * st_.tick_length.count(), st_.floor);
+  }
+
+ private:
+  const camera_node_state& st_;
+  std::int64_t tick_;
+  std::map<controller::task_id, std::optional<vision::floor_estimate>> expected_;
+};
+
+// sensing.group_geometry: calibrated: a find is refused where the group's estimate says she
+// cannot be (pixels: by the found box).
 sensing::pixel_sensor::truth_check position_check(camera_node_state& st,
                                                   const world::snapshot& frame,
                                                   sensing::pixel_sensor::truth_check inner) {
   if (!st.world || !st.world->positions) return inner;
-  const auto tick = static_cast<std::int64_t>(frame.tick());
-  return [&st, tick, inner = std::move(inner)](controller::task_id task, const cv::Rect& box) {
-    if (inner && !inner(task, box)) return false;
-    const auto expected = group_estimate(st, task, tick);
-    if (!expected || !expected->confirmed) return true;
-    const auto found = floor_of(st, cv::Rect2d(box), tick);
-    return found && vision::could_be(*found, *expected,
-                                     (tick - expected->tick) * st.tick_length.count(), st.floor);
+  auto gate = std::make_shared<floor_gate>(st, static_cast<std::int64_t>(frame.tick()));
+  return [gate, inner = std::move(inner)](controller::task_id task, const cv::Rect& box) {
+    return (!inner || inner(task, box)) && gate->admits(task, cv::Rect2d(box));
   };
 }
 
+// The same under emulated sensing, by the pedestrian's projected body box (the emulated
+// sensor's boxes are that box, jittered).
 sensing::emulated_looks::truth_check position_id_check(camera_node_state& st,
                                                        const world::snapshot& frame,
                                                        sensing::emulated_looks::truth_check inner) {
   if (!st.world || !st.world->positions) return inner;
-  const auto tick = static_cast<std::int64_t>(frame.tick());
-  return [&st, &frame, tick, inner = std::move(inner)](controller::task_id task, int id) {
-    if (inner && !inner(task, id)) return false;
-    const auto expected = group_estimate(st, task, tick);
-    if (!expected || !expected->confirmed) return true;
-    const auto box = sensing::operator_box(frame, *st.world->station, view_of(st), id);
-    const auto found = box ? floor_of(st, *box, tick) : std::nullopt;
-    return found && vision::could_be(*found, *expected,
-                                     (tick - expected->tick) * st.tick_length.count(), st.floor);
+  auto gate = std::make_shared<floor_gate>(st, static_cast<std::int64_t>(frame.tick()));
+  return [&st, &frame, gate, inner = std::move(inner)](controller::task_id task, int id) {
+    return (!inner || inner(task, id)) &&
+           gate->admits(task, sensing::operator_box(frame, *st.world->station, view_of(st), id));
   };
 }
 
-// What this node, a member of `task`'s group, found for it goes on the board.
+// What this node, a member of `task`'s group, found for it goes on the board, confirmed when
+// tested against a confirmed estimate (or the task's first).
 void post_estimates(camera_node_state& st, const world::snapshot& frame) {
   if (!st.world || !st.world->positions) return;
   const auto task = st.controller->task();
   if (!task || st.controller->state() != controller::node_state::performing_task) return;
   const auto tick = static_cast<std::int64_t>(frame.tick());
+  const auto last = st.world->positions->latest(*task, tick - 1);
+  const bool confirmed = vision::confirmed_by(trusted(st, last, tick), !last);
   for (const auto& r : st.input.looks) {
     if (r.task != *task || !r.found) continue;
     auto e = floor_of(st, r.box, tick);
     if (!e) continue;
-    const auto expected = group_estimate(st, *task, tick);
-    e->confirmed = vision::confirmed_by(expected, !st.world->positions->latest(*task, tick - 1));
+    e->confirmed = confirmed;
     st.world->positions->put(*task, st.camera_id,
                              st.controller->role() == controller::group_role::leader, *e);
   }

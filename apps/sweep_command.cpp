@@ -218,9 +218,7 @@ class sweep {
         if (const auto m = run.metric(args_.compare)) sample.push_back(*m);
       const auto m = report::mean_with_ci95(sample);
       std::cout << fmt::format("{}: n={} mean {:.4f}", args_.compare, m.count, m.mean);
-      if (m.half_width)
-        std::cout << fmt::format(" (95% CI {:.4f} to {:.4f})", m.mean - *m.half_width,
-                                 m.mean + *m.half_width);
+      if (m.half_width) std::cout << fmt::format(" (95% CI {:.4f} to {:.4f})", *m.low(), *m.high());
       std::cout << '\n';
       return;
     }
