@@ -11,7 +11,8 @@ namespace argus::config {
 /// Overrides edit the YAML tree before validation, so a bad key or value gets the loader's
 /// own message naming the field, exactly as if the file had said it.
 struct field_override {
-  /// Dot-separated path; a number selects a list entry (0-based).
+  /// Dot-separated path; a number selects a list entry (0-based), `*` every entry
+  /// (`cameras.*.imaging.noise_sigma`).
   std::string path;
   /// YAML text: a scalar (`0.2`, `all_solv`, `2 min`) or a flow collection (`[1, 2]`).
   std::string value;

@@ -58,6 +58,55 @@ YAML::Node without_marks(const YAML::Node& node) {
   throw scenario_error({problem{source_name, 0, 0, o.path, "--set: " + std::move(message)}});
 }
 
+// Puts `value` at segments[k..] below `at` (reached by `walked`); '*' on a list puts it in
+// every entry, so one key sets a field of every camera. Each place gets its own copy: yaml-cpp
+// nodes are shared by reference, and a later override of one entry must not reach the others.
+void put(YAML::Node at, const std::vector<std::string>& segments, std::size_t k,
+         const YAML::Node& value, const std::string& walked, const std::string& source_name,
+         const field_override& o) {
+  const auto& segment = segments[k];
+  const bool last = k + 1 == segments.size();
+  const std::string here = walked + (walked.empty() ? "" : ".");
+  if (segment == "*") {
+    if (!at.IsSequence() || at.size() == 0)
+      reject(source_name, o,
+             fmt::format("'*' stands for every entry of a list; {} is {}", walked,
+                         at.IsSequence() ? "an empty list" : "not a list"));
+    for (std::size_t index = 0; index < at.size(); ++index) {
+      if (last)
+        at[index] = without_marks(value);
+      else
+        put(at[index], segments, k + 1, value, here + std::to_string(index), source_name, o);
+    }
+    return;
+  }
+  YAML::Node next;
+  if (at.IsSequence()) {
+    const auto index = index_of(segment);
+    if (!index || *index >= at.size())
+      reject(source_name, o,
+             fmt::format("{} is a list of {}; '{}' is not one of its indices (0 to {}, or *)",
+                         walked, at.size(), segment, static_cast<long>(at.size()) - 1));
+    if (last) {
+      at[*index] = without_marks(value);
+      return;
+    }
+    next.reset(at[*index]);
+  } else if (at.IsScalar()) {
+    reject(source_name, o,
+           fmt::format("{} is a value ('{}'), not a mapping with '{}' in it", walked, at.Scalar(),
+                       segment));
+  } else {
+    if (!at.IsMap()) at = YAML::Node(YAML::NodeType::Map);
+    if (last) {
+      at[segment] = without_marks(value);
+      return;
+    }
+    next.reset(at[segment]);
+  }
+  put(next, segments, k + 1, value, here + segment, source_name, o);
+}
+
 void apply(YAML::Node& document, const field_override& o, const std::string& source_name) {
   for (const auto& text : {o.path, o.value}) {
     if (const auto bad = first_non_utf8(text)) reject(source_name, o, expected_utf8(*bad));
@@ -69,41 +118,7 @@ void apply(YAML::Node& document, const field_override& o, const std::string& sou
     reject(source_name, o, fmt::format("'{}' is not a YAML value: {}", o.value, error.msg));
   }
   if (!document.IsMap()) document = YAML::Node(YAML::NodeType::Map);
-  const auto segments = segments_of(o.path);
-  // yaml-cpp nodes are references: `at = at[key]` would overwrite the node, reset() rebinds.
-  YAML::Node at;
-  at.reset(document);
-  std::string walked;
-  for (std::size_t k = 0; k < segments.size(); ++k) {
-    const auto& segment = segments[k];
-    const bool last = k + 1 == segments.size();
-    YAML::Node next;
-    if (at.IsSequence()) {
-      const auto index = index_of(segment);
-      if (!index || *index >= at.size())
-        reject(source_name, o,
-               fmt::format("{} is a list of {}; '{}' is not one of its indices (0 to {})", walked,
-                           at.size(), segment, static_cast<long>(at.size()) - 1));
-      if (last) {
-        at[*index] = value;
-        return;
-      }
-      next.reset(at[*index]);
-    } else if (at.IsScalar()) {
-      reject(source_name, o,
-             fmt::format("{} is a value ('{}'), not a mapping with '{}' in it", walked, at.Scalar(),
-                         segment));
-    } else {
-      if (!at.IsMap()) at = YAML::Node(YAML::NodeType::Map);
-      if (last) {
-        at[segment] = value;
-        return;
-      }
-      next.reset(at[segment]);
-    }
-    walked += (walked.empty() ? "" : ".") + segment;
-    at.reset(next);
-  }
+  put(document, segments_of(o.path), 0, value, "", source_name, o);
 }
 
 }  // namespace

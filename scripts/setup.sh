@@ -29,6 +29,12 @@ argus_install_missing() {
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends "${missing[@]}"
 }
 
+# ccache keys on the compile command, whose include paths are absolute: relative to the checkout
+# (and without the build folder in debug builds' keys) a clean clone in another folder, as CI's
+# is, reuses the objects of a build made here instead of compiling everything again.
+export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$ARGUS_ROOT}"
+export CCACHE_NOHASHDIR="${CCACHE_NOHASHDIR:-1}"
+
 # argus_build DIR [--target T] [cmake options...]: configures DIR on first use, then builds
 # incrementally (everything, or target T and what it needs).
 argus_build() {

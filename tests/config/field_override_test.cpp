@@ -61,6 +61,31 @@ TEST(field_override, indexes_lists_and_takes_flow_values) {
   EXPECT_DOUBLE_EQ(s.cameras.at(1).position.y_m, 6.0);
 }
 
+TEST(field_override, a_star_sets_the_field_in_every_entry_of_a_list) {
+  const auto s = with({{"cameras.*.imaging", "{resolution: [64, 48], noise_sigma: 2}"},
+                       {"cameras.0.imaging.resolution", "[32, 24]"},
+                       {"cameras.*.height_m", "7"}});
+  ASSERT_EQ(s.cameras.size(), 2u);
+  // The later override inside one entry reaches that entry alone: each got its own copy.
+  EXPECT_EQ(s.cameras[0].imaging.width_px, 32u);
+  EXPECT_EQ(s.cameras[0].imaging.height_px, 24u);
+  EXPECT_EQ(s.cameras[1].imaging.width_px, 64u);
+  EXPECT_EQ(s.cameras[1].imaging.height_px, 48u);
+  for (const auto& camera : s.cameras) EXPECT_DOUBLE_EQ(camera.imaging.noise_sigma, 2.0);
+  for (const auto& camera : s.cameras) EXPECT_DOUBLE_EQ(camera.height_m, 7.0);
+  // Fields the star does not name stay as the file says.
+  EXPECT_DOUBLE_EQ(s.cameras[1].position.x_m, 9.0);
+}
+
+TEST(field_override, a_star_needs_a_list_with_entries) {
+  const auto on_map = error_of({{"world.*", "1"}});
+  EXPECT_NE(on_map.find("'*' stands for every entry of a list; world is not a list"),
+            std::string::npos)
+      << on_map;
+  const auto deeper = error_of({{"cameras.*.position.x", "1"}});
+  EXPECT_NE(deeper.find("cameras.0.position is a list of 2"), std::string::npos) << deeper;
+}
+
 TEST(field_override, later_overrides_win) {
   EXPECT_EQ(with({{"world.population", "5"}, {"world.population", "7"}}).world.population, 7u);
 }
