@@ -47,6 +47,9 @@ if [ ! -f "$tarball" ]; then
   exit 1
 fi
 tar -xzf "$tarball" -C "$work"
+# The source lies in a new temporary folder each time: ccache's keys relative to it let a
+# second machine-local build (CI's clone after a developer's) reuse the first one's objects.
+export CCACHE_BASEDIR="$work" CCACHE_NOHASHDIR=1
 cmake -S "$work/actor-framework-$upstream" -B "$work/build" -G Ninja \
   -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" \
   -DCMAKE_INSTALL_PREFIX="$prefix" \
