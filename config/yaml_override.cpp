@@ -67,12 +67,23 @@ void put(YAML::Node at, const std::vector<std::string>& segments, std::size_t k,
   const auto& segment = segments[k];
   const bool last = k + 1 == segments.size();
   const std::string here = walked + (walked.empty() ? "" : ".");
-  if (segment == "*") {
-    if (!at.IsSequence() || at.size() == 0)
-      reject(source_name, o,
-             fmt::format("'*' stands for every entry of a list; {} is {}", walked,
-                         at.IsSequence() ? "an empty list" : "not a list"));
-    for (std::size_t index = 0; index < at.size(); ++index) {
+  if (segment == "*" || at.IsSequence()) {
+    std::vector<std::size_t> entries;
+    if (segment == "*") {
+      if (!at.IsSequence() || at.size() == 0)
+        reject(source_name, o,
+               fmt::format("'*' stands for every entry of a list; {} is {}", walked,
+                           at.IsSequence() ? "an empty list" : "not a list"));
+      for (std::size_t index = 0; index < at.size(); ++index) entries.push_back(index);
+    } else {
+      const auto index = index_of(segment);
+      if (!index || *index >= at.size())
+        reject(source_name, o,
+               fmt::format("{} is a list of {}; '{}' is not one of its indices (0 to {}, or *)",
+                           walked, at.size(), segment, static_cast<long>(at.size()) - 1));
+      entries.push_back(*index);
+    }
+    for (const auto index : entries) {
       if (last)
         at[index] = without_marks(value);
       else
@@ -80,31 +91,17 @@ void put(YAML::Node at, const std::vector<std::string>& segments, std::size_t k,
     }
     return;
   }
-  YAML::Node next;
-  if (at.IsSequence()) {
-    const auto index = index_of(segment);
-    if (!index || *index >= at.size())
-      reject(source_name, o,
-             fmt::format("{} is a list of {}; '{}' is not one of its indices (0 to {}, or *)",
-                         walked, at.size(), segment, static_cast<long>(at.size()) - 1));
-    if (last) {
-      at[*index] = without_marks(value);
-      return;
-    }
-    next.reset(at[*index]);
-  } else if (at.IsScalar()) {
+  if (at.IsScalar()) {
     reject(source_name, o,
            fmt::format("{} is a value ('{}'), not a mapping with '{}' in it", walked, at.Scalar(),
                        segment));
-  } else {
-    if (!at.IsMap()) at = YAML::Node(YAML::NodeType::Map);
-    if (last) {
-      at[segment] = without_marks(value);
-      return;
-    }
-    next.reset(at[segment]);
   }
-  put(next, segments, k + 1, value, here + segment, source_name, o);
+  if (!at.IsMap()) at = YAML::Node(YAML::NodeType::Map);
+  if (last) {
+    at[segment] = without_marks(value);
+    return;
+  }
+  put(at[segment], segments, k + 1, value, here + segment, source_name, o);
 }
 
 void apply(YAML::Node& document, const field_override& o, const std::string& source_name) {
