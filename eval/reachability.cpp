@@ -9,7 +9,7 @@
 namespace argus::eval {
 namespace {
 
-constexpr double deg = std::numbers::pi / 180.0;
+constexpr double rad_per_deg = std::numbers::pi / 180.0;
 
 // `angle` moved by whole turns as close as possible to `centre`.
 double nearest_turn(double angle, double centre) {
@@ -28,13 +28,14 @@ bool reachable(const config::camera_settings& camera, const world::station& stat
   const double aspect =
       static_cast<double>(camera.imaging.height_px) / static_cast<double>(camera.imaging.width_px);
   const double widest = camera.field_of_view_limits.max_deg;
-  const double widest_vertical = 2.0 * std::atan(std::tan(widest * deg / 2.0) * aspect) / deg;
+  const double widest_vertical =
+      2.0 * std::atan(std::tan(widest * rad_per_deg / 2.0) * aspect) / rad_per_deg;
   const double narrowest_vertical =
-      2.0 * std::atan(std::tan(camera.field_of_view_limits.min_deg * deg / 2.0) * aspect);
+      2.0 * std::atan(std::tan(camera.field_of_view_limits.min_deg * rad_per_deg / 2.0) * aspect);
   const double tall_px =
       camera.imaging.height_px * height_m / (2.0 * distance * std::tan(narrowest_vertical / 2.0));
   if (tall_px < min_reachable_height_px) return false;
-  const double tilt = std::atan2(rise, ground) / deg;
+  const double tilt = std::atan2(rise, ground) / rad_per_deg;
   if (tilt < camera.tilt_limits.min_deg - widest_vertical / 2.0 ||
       tilt > camera.tilt_limits.max_deg + widest_vertical / 2.0)
     return false;
@@ -42,7 +43,7 @@ bool reachable(const config::camera_settings& camera, const world::station& stat
   if (pan_range.max_deg - pan_range.min_deg < 360.0) {
     const double centre = (pan_range.min_deg + pan_range.max_deg) / 2.0;
     const double pan =
-        nearest_turn(std::atan2(where.y() - base.y(), where.x() - base.x()) / deg, centre);
+        nearest_turn(std::atan2(where.y() - base.y(), where.x() - base.x()) / rad_per_deg, centre);
     if (pan < pan_range.min_deg - widest / 2.0 || pan > pan_range.max_deg + widest / 2.0)
       return false;
   }

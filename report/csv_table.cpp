@@ -8,7 +8,7 @@ namespace argus::report {
 
 namespace {
 
-std::vector<std::string> fields_of(std::string_view line) {
+std::vector<std::string> csv_fields_of(std::string_view line) {
   if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
   std::vector<std::string> out;
   std::size_t from = 0;
@@ -41,7 +41,7 @@ csv_table csv_table::parse(std::string_view text) {
     const auto line = text.substr(from, end - from);
     from = end + 1;
     if (line.empty() || line == "\r") continue;
-    auto fields = fields_of(line);
+    auto fields = csv_fields_of(line);
     if (out.header_.empty())
       out.header_ = std::move(fields);
     else if (fields.size() >= out.header_.size())

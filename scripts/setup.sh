@@ -35,8 +35,8 @@ argus_install_missing() {
 export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$ARGUS_ROOT}"
 export CCACHE_NOHASHDIR="${CCACHE_NOHASHDIR:-1}"
 
-# argus_build DIR [--target T] [cmake options...]: configures DIR on first use, then builds
-# incrementally (everything, or target T and what it needs).
+# argus_build DIR [--target T] [cmake options...]: configures DIR, then builds incrementally
+# (everything, or target T and what it needs).
 argus_build() {
   local dir="$1"
   shift
@@ -45,9 +45,11 @@ argus_build() {
     target=(--target "$2")
     shift 2
   fi
-  if [ ! -f "$dir/build.ninja" ]; then
-    cmake -S "$ARGUS_ROOT" -B "$dir" -G Ninja -DCMAKE_CXX_COMPILER_LAUNCHER=ccache "$@"
-  fi
+  # Configured every time (a few seconds), so that a tree made before an option was added to
+  # the scripts (-DARGUS_UNITY=ON, say) takes it.
+  mkdir -p "$dir"
+  cmake -S "$ARGUS_ROOT" -B "$dir" -G Ninja -DCMAKE_CXX_COMPILER_LAUNCHER=ccache "$@" > "$dir/configure.log" 2>&1 ||
+    { cat "$dir/configure.log" >&2; return 1; }
   cmake --build "$dir" --parallel "$(nproc)" "${target[@]}" && return 0
   # A compile once failed in CI with no diagnostic at all (a killed compiler or a full disk
   # leaves none); the state of the machine is printed, and the build is tried once more

@@ -1,9 +1,15 @@
 #!/usr/bin/env bash
 # Installs what is missing, then builds and runs the whole test suite three ways:
-#   Release; ASan+UBSan (everything); TSan (the actor layer, label "actors").
+#   Release; ASan+UBSan (everything but the tests labelled "slow"); TSan (the actor layer,
+#   label "actors").
 #   scripts/test.sh            all three
 #   scripts/test.sh --quick    Release only
 # Any failing test or sanitizer report fails the script.
+#
+# Each stage prints its time and, at the end, its share of the 45-minute budget for a cold run
+# on 2 cores (bench/RESULTS.md, "A newcomer's first half hour"). On a warm run (the compiler
+# cache answered nearly every compile) a stage over its share fails the script: something made
+# the tests themselves slow, and a cold CI run would no longer fit. A cold run only warns.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/setup.sh"
 cd "$ARGUS_ROOT"
@@ -12,31 +18,90 @@ quick=0
 jobs="$(nproc)"
 stage_time() { echo "$((SECONDS / 60)) min $((SECONDS % 60)) s in"; }
 
-echo "== free on this disk: $(df -h --output=avail . | tail -1 | tr -d ' '); memory: $(free -g | awk '/^Mem/ {print $7}') GiB available"
-echo "== Release build and tests ($(stage_time))"
-argus_build build -DCMAKE_BUILD_TYPE=Release
+# Shares of the 45 minutes, from the bare-machine measurement (whole stage: build and tests).
+declare -A budget_s=([release]=1200 [asan]=1200 [tsan]=600)
+declare -A stage_s stage_warm
+stage_started=0
+ccache_compiles() {  # hits and misses so far, "HITS MISSES"
+  ccache --print-stats 2>/dev/null | awk '
+    /^(direct|preprocessed)_cache_hit\t/ {h += $2} /^cache_miss\t/ {m += $2}
+    END {print h + 0, m + 0}'
+}
+stage_begin() {
+  stage_started=$SECONDS
+  read -r stage_hits stage_misses < <(ccache_compiles)
+  echo "== $1 ($(stage_time))"
+}
+stage_end() {  # stage_end NAME: records its time and whether its compiles came from the cache
+  local name="$1" hits misses
+  stage_s[$name]=$((SECONDS - stage_started))
+  read -r hits misses < <(ccache_compiles)
+  hits=$((hits - stage_hits))
+  misses=$((misses - stage_misses))
+  # Warm: at most 5 % of the stage's compiles (and at most 20) had to run the compiler.
+  if [ $((misses * 20)) -le $((hits + misses)) ] && [ "$misses" -le 20 ]; then
+    stage_warm[$name]=1
+  else
+    stage_warm[$name]=0
+  fi
+  echo "== $name: $((stage_s[$name] / 60)) min $((stage_s[$name] % 60)) s ($hits compiles from the cache, $misses compiled)"
+}
+check_budgets() {
+  local name over=0 kind
+  echo "== stage times against their share of a cold run's 45 minutes on 2 cores:"
+  for name in release asan tsan; do
+    [ -n "${stage_s[$name]:-}" ] || continue
+    kind=cold
+    [ "${stage_warm[$name]}" -eq 1 ] && kind=warm
+    printf '   %-8s %5d s of %5d s (%s)\n' "$name" "${stage_s[$name]}" "${budget_s[$name]}" "$kind"
+    if [ "${stage_s[$name]}" -gt "${budget_s[$name]}" ]; then
+      if [ "$kind" = warm ]; then
+        echo "argus: the $name stage took ${stage_s[$name]} s on a warm compiler cache, over its" \
+             "share of ${budget_s[$name]} s: its tests have become too slow for a cold CI run to fit" \
+             "in time (see bench/RESULTS.md, \"A newcomer's first half hour\")" >&2
+        over=1
+      else
+        echo "argus: warning: the $name stage took ${stage_s[$name]} s from a cold cache, over its" \
+             "share of ${budget_s[$name]} s (on 2 cores; a slower or busier machine takes longer)" >&2
+      fi
+    fi
+  done
+  return "$over"
+}
+
+echo "== free on this disk: $(df -h --output=avail . | tail -1 | tr -d ' '); memory: $(free -g | awk '/^Mem/ {print $7}') GiB available; $jobs cores"
+stage_begin "Release build and tests"
+argus_build build -DCMAKE_BUILD_TYPE=Release -DARGUS_UNITY=ON
 ctest --test-dir build --output-on-failure -j "$jobs"
-[ "$quick" -eq 1 ] && exit 0
+stage_end release
+if [ "$quick" -eq 1 ]; then
+  check_budgets
+  exit 0
+fi
 
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:halt_on_error=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
-echo "== ASan+UBSan build and tests ($(stage_time))"
+stage_begin "ASan+UBSan build and tests"
 # -O1 -g1 (ASan's own advice, and line tables suffice for its stack traces): at -O2 -g the
 # sanitizer build took half of CI's 90 minutes; a CAF-heavy file now compiles 2.6x faster.
 argus_build build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DARGUS_SANITIZE=address,undefined \
-  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DARGUS_BUILD_BENCH=OFF
+  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DARGUS_BUILD_BENCH=OFF -DARGUS_UNITY=ON
 # A test that fails is run once more under ASan: LeakSanitizer's exit-time tracer can crash
 # itself ("Tracer caught signal 11 ... LeakSanitizer has encountered a fatal error"); a real
 # failure fails twice. (Its frequent cause here, a stale entry of the OpenGL driver's dynamic
 # TLS in a main thread that had rendered, is gone: report/feed_frames.cpp.)
-ctest --test-dir build-asan --output-on-failure -j "$jobs" --repeat until-pass:2
+# The "slow" end-to-end runs ran in the Release tree; the shorter runs cover their paths here.
+ctest --test-dir build-asan --output-on-failure -j "$jobs" --repeat until-pass:2 -LE slow
+stage_end asan
 
 export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1:suppressions=$ARGUS_ROOT/tests/tsan.supp"
-echo "== TSan build and actor-layer tests, against a TSan build of CAF ($(stage_time))"
+stage_begin "TSan build and actor-layer tests, against a TSan build of CAF"
 scripts/tsan_caf.sh "$ARGUS_ROOT/build-tsan/caf"
 # Only what the actor-layer tests need is built, with line tables rather than full debug info.
 argus_build build-tsan --target actor_tests -DCMAKE_BUILD_TYPE=RelWithDebInfo -DARGUS_SANITIZE=thread \
-  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" -DARGUS_BUILD_BENCH=OFF \
+  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" -DARGUS_BUILD_BENCH=OFF -DARGUS_UNITY=ON \
   -DCMAKE_PREFIX_PATH="$ARGUS_ROOT/build-tsan/caf"
 ctest --test-dir build-tsan --output-on-failure -j "$jobs" -L actors
+stage_end tsan
+check_budgets
 echo "== all tests passed ($(stage_time))"

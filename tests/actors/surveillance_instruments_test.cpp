@@ -27,7 +27,7 @@ using surveillance_runs::station;
 // controller.oracle_zoom: false points the oracle's cameras at her with their default field of
 // view: no camera's field of view ever leaves its default, where the oracle as first built
 // zooms every camera it assigns.
-TEST(surveillance, the_oracle_without_zoom_keeps_every_default_field_of_view) {
+TEST(surveillance_instruments, the_oracle_without_zoom_keeps_every_default_field_of_view) {
   std::map<bool, int> zoomed_rows;
   for (bool zoom : {true, false}) {
     auto s = station(60.0, "argus_surveil_oracle_zoom");
@@ -49,7 +49,7 @@ TEST(surveillance, the_oracle_without_zoom_keeps_every_default_field_of_view) {
 // controller.oracle_signature: operator gives every oracle camera the signature of the
 // operator's pick (on pixels, where a camera's own view of her differs from it): the cameras
 // still find her with it, and what they find differs from the run with their own views'.
-TEST(surveillance, the_oracle_can_look_with_the_operators_signature) {
+TEST(surveillance_instruments, the_oracle_can_look_with_the_operators_signature) {
   std::map<config::oracle_signature, std::string> tracks;
   for (auto from : {config::oracle_signature::own_view, config::oracle_signature::operator_pick}) {
     auto s = config::load_scenario(std::filesystem::path(ARGUS_SOURCE_DIR) /
@@ -100,7 +100,7 @@ int bidders_that_zoomed(const run_outcome& o, const config::scenario& s) {
 // found her is pointed and zoomed where the group sees her, or where she is once the group holds
 // nobody, where the paper's holds its pose while it looks; and the run stays the same whatever
 // the thread count (nodes read only the last frame's sightings).
-TEST(surveillance, with_the_groups_geometry_bidders_turn_to_where_the_group_sees_her) {
+TEST(surveillance_instruments, with_the_groups_geometry_bidders_turn_to_where_the_group_sees_her) {
   auto paper = station(90.0, "argus_surveil_geometry");
   const auto held = run_scenario(paper, false);
   EXPECT_EQ(bidders_that_zoomed(held, paper), 0);
@@ -127,7 +127,7 @@ TEST(surveillance, with_the_groups_geometry_bidders_turn_to_where_the_group_sees
 // zoomed at where its group's calibrated cameras put her on the floor (the paper's holds its
 // pose while it looks: the test above), and the run stays the same whatever the thread count
 // (nodes read only earlier frames' estimates). The gate's rule is floor_estimate_test's.
-TEST(surveillance, calibrated_cameras_turn_bidders_to_where_the_group_puts_her) {
+TEST(surveillance_instruments, calibrated_cameras_turn_bidders_to_where_the_group_puts_her) {
   auto calibrated = station(90.0, "argus_surveil_calibrated");
   calibrated.sensing.geometry = config::group_geometry::calibrated;
   const auto first = run_scenario(calibrated, false);
@@ -140,7 +140,7 @@ TEST(surveillance, calibrated_cameras_turn_bidders_to_where_the_group_puts_her) 
 // sensing.identity: ground_truth takes away the cameras' mistakes of identity and nothing else:
 // with it no group member's box is ever on someone else while she goes unobserved, and nearly
 // every box found for the task is hers; the same run with the paper's cameras follows others.
-TEST(surveillance, with_identity_from_ground_truth_the_group_follows_nobody_else) {
+TEST(surveillance_instruments, with_identity_from_ground_truth_the_group_follows_nobody_else) {
   std::map<config::identity_source, eval::task_metrics> task;
   for (auto identity :
        {config::identity_source::appearance, config::identity_source::ground_truth}) {

@@ -7,7 +7,7 @@
 namespace argus::config {
 
 /// Lets GoogleTest print a problem as the user would see it.
-void PrintTo(const problem& what, std::ostream* out) {
+inline void PrintTo(const problem& what, std::ostream* out) {
   *out << to_string(what);
 }
 

@@ -10,8 +10,9 @@
 
 namespace argus::config {
 
-/// Lets GoogleTest print a problem as the user would see it.
-void PrintTo(const problem& what, std::ostream* out) {
+/// Lets GoogleTest print a problem as the user would see it (inline: the folder's tests link
+/// into one executable, and scenario_loader_test.cpp has the same).
+inline void PrintTo(const problem& what, std::ostream* out) {
   *out << to_string(what);
 }
 
