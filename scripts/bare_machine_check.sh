@@ -68,6 +68,11 @@ for f in /etc/apt/sources.list.d/*.sources; do
 done
 [ -f /etc/apt/sources.list ] && cp /etc/apt/sources.list "$root/etc/apt/"
 cp -L /etc/resolv.conf "$root/etc/resolv.conf"
+# debootstrap writes no /etc/hosts, which every installed Debian has: without it "localhost"
+# does not resolve, and Selenium cannot reach chromedriver (the live console's browser test).
+if [ ! -f "$root/etc/hosts" ]; then
+  printf '127.0.0.1\tlocalhost\n::1\t\tlocalhost ip6-localhost ip6-loopback\n' > "$root/etc/hosts"
+fi
 for m in proc sys dev dev/pts dev/shm; do
   mkdir -p "$root/$m"
   case "$m" in
@@ -97,39 +102,41 @@ empty_ccache() { rm -rf "$root/root/.cache/ccache" "$root/root/.ccache"; }
 
 cpu="$(lscpu | sed -n 's/^Model name: *//p' | head -1)"
 note "machine: $cpu, $(nproc) cores, $(free -g | awk '/^Mem/ {print $2}') GiB memory; commit $commit"
-demo_s=null tests_s=null demo_rc=null tests_rc=null
+run_s=0 run_rc=0
+timed() {  # timed LOG COMMAND: runs COMMAND in the root; sets run_s and run_rc
+  local s=$SECONDS
+  set +e
+  in_root "$@"
+  run_rc=$?
+  set -e
+  run_s=$((SECONDS - s))
+}
+demo_s=null demo_rc=null tests_s=null tests_rc=null packages_s=null
 if [ "$do_demo" -eq 1 ]; then
   fresh_clone demo
   empty_ccache
-  s=$SECONDS
-  set +e
-  in_root "$out/demo.log" "cd /src/demo && scripts/demo.sh"
-  demo_rc=$?
-  set -e
-  demo_s=$((SECONDS - s))
-  note "demo.sh: exit $demo_rc after $demo_s s; its stages:"
+  timed "$out/demo.log" "cd /src/demo && scripts/demo.sh"
+  demo_s=$run_s demo_rc=$run_rc
+  note "demo.sh: exit $demo_rc after $demo_s s, packages included; its stages:"
   grep -E '^== ' "$out/demo.log" | tee -a "$summary" || true
   grep -E 'report.html|plan.png|contact_sheet.png' "$out/demo.log" | tail -3 | tee -a "$summary" || true
 fi
 if [ "$do_tests" -eq 1 ]; then
   fresh_clone tests
   empty_ccache
-  s=$SECONDS
-  set +e
   # Packages first (a no-op after the demo), so that test.sh's own time starts installed.
-  in_root "$out/packages.log" "cd /src/tests && source scripts/setup.sh"
-  s=$SECONDS
-  in_root "$out/test.log" "cd /src/tests && scripts/test.sh"
-  tests_rc=$?
-  set -e
-  tests_s=$((SECONDS - s))
+  timed "$out/packages.log" "cd /src/tests && source scripts/setup.sh"
+  packages_s=$run_s
+  note "packages: exit $run_rc after $packages_s s"
+  timed "$out/test.log" "cd /src/tests && scripts/test.sh"
+  tests_s=$run_s tests_rc=$run_rc
   note "test.sh: exit $tests_rc after $tests_s s; its stages:"
   grep -E '^== ' "$out/test.log" | tee -a "$summary" || true
 fi
 cat > "$out/summary.json" <<EOF
 {"commit": "$commit", "cpu": "$cpu", "cores": $(nproc),
  "memory_gib": $(free -g | awk '/^Mem/ {print $2}'),
- "demo_seconds": $demo_s, "demo_exit": $demo_rc,
+ "demo_seconds": $demo_s, "demo_exit": $demo_rc, "packages_seconds": $packages_s,
  "test_seconds": $tests_s, "test_exit": $tests_rc}
 EOF
 note "logs and summary in $out"
