@@ -1,20 +1,20 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <map>
+#include <memory>
 
 #include "actors/camera_pose_board.hpp"
+#include "actors/node_observer.hpp"
 #include "actors/operator_board.hpp"
-#include "actors/oracle_board.hpp"
 #include "actors/participant_info.hpp"
-#include "actors/position_board.hpp"
-#include "actors/sighting_board.hpp"
 #include "actors/snapshot_board.hpp"
 #include "caf/actor.hpp"
 #include "caf/fwd.hpp"
 #include "config/scenario.hpp"
-#include "eval/observation_log.hpp"
-#include "live/console_state.hpp"
+#include "controller/strategy_registry.hpp"
+#include "sensing/sensor.hpp"
 #include "vision/sensor_model.hpp"
 #include "world/station.hpp"
 
@@ -31,28 +31,29 @@ struct attached_link {
 using link_directory = std::map<int, attached_link>;
 
 /// What the simulator lends every camera node of a run to sense with: the station and the
-/// latest snapshot (for rendering and for the emulated sensor; never handed to the controller),
-/// the render pool (pixel sensing) and the emulated sensor's error model.
+/// latest snapshot (for rendering and for the emulated sensor; never handed to the strategy),
+/// the render pool (for sensors that need images) and the emulated sensor's error model; and
+/// what the host equips nodes with (instruments, an oracle's ground truth, observers).
 struct camera_world {
   std::shared_ptr<const world::station> station;
   std::shared_ptr<snapshot_board> board;
-  /// The render pool's front; null unless sensing is by pixels.
+  /// The render pool's front; null unless sensors need images.
   caf::actor render_pool;
   vision::sensor_model sensor_model;
-  /// Where nodes record their frames for the evaluation against ground truth; null = none.
-  std::shared_ptr<eval::observation_log> log;
-  /// The central oracle's orders (control_strategy::oracle only).
-  std::shared_ptr<oracle_board> oracle;
-  /// Whom group members' boxes were on (sensing.group_geometry: ground_truth only).
-  std::shared_ptr<sighting_board> sightings;
-  /// Where group members' calibrated cameras put their boxes on the floor
-  /// (sensing.group_geometry: calibrated only).
-  std::shared_ptr<position_board> positions;
+  /// The host's instruments (eval/): each node's sensor and strategy go through these once made;
+  /// unset: none.
+  std::function<std::unique_ptr<sensing::sensor>(const config::camera_settings&,
+                                                 std::unique_ptr<sensing::sensor>)>
+      wrap_sensor;
+  std::function<std::unique_ptr<controller::strategy>(const config::camera_settings&,
+                                                      std::unique_ptr<controller::strategy>)>
+      wrap_strategy;
+  /// Ground truth for a strategy registered as an oracle; unset: none to lend.
+  std::function<controller::oracle_source(const config::camera_settings&)> oracle_for;
+  /// Who watches the nodes' turns (live console, evaluation); null for none.
+  std::shared_ptr<node_observer> observer;
   /// The operator's live tasks and cancellations (argus serve); null for none.
   std::shared_ptr<operator_board> operators;
-  /// Where nodes show the live console their pose, frame and traffic (display only; null for
-  /// none).
-  std::shared_ptr<live::console_state> console;
   /// Where nodes leave the pose of their next frame for the video recorder; null for none.
   std::shared_ptr<camera_pose_board> poses;
 };
@@ -64,19 +65,20 @@ participant_info camera_participant(const config::camera_settings& camera);
 /// `camera_participant(camera)`, before the clock starts or from inside a tick, so that joins
 /// stay deterministic.
 ///
-/// The node hosts the camera controller (controller::camera_controller: Fig. 10 and the
-/// grouping protocol), its PTZ head (vision::ptz_camera) and its sensor, and runs the network
-/// side (`protocol::node_network`: hello beacons, neighbour discovery, multi-hop forwarding,
-/// `ping`, request time-outs). Fig. 10's top level is the actor's behaviour: `idle`,
-/// `computing_relevance` and `performing_task`, switched with `become` after each turn; they
-/// share the link-mail handlers. An idle node renders nothing; the others ask the render pool
-/// for their frame (pixel sensing) or the emulated sensor, at the head's pose, then run the
-/// controller on it. `(node_state_atom)` answers the behaviour's name.
+/// The node is glue: it hosts the camera's strategy (controller/strategy.hpp: the paper's
+/// Fig. 10 controller and grouping protocol, or another by `controller.strategy`), its PTZ head
+/// (vision::ptz_camera), its sensor (sensing/sensor.hpp) and the operator at its monitor
+/// (camera_operator), and runs the network side (`protocol::node_network`: hello beacons, neighbour
+/// discovery, multi-hop forwarding, `ping`, request time-outs). Fig. 10's top level is the actor's
+/// behaviour: `idle`, `computing_relevance` and `performing_task` (the strategy's status), switched
+/// with `become` after each turn; they share the link-mail handlers. A node senses only when the
+/// strategy's plan or the operator wants a frame; its sensor then looks, at the head's pose, on a
+/// frame from the render pool if it needs pixels. `(node_state_atom)` answers the behaviour's name.
 ///
 /// Each turn: the messages its links delivered (decoded; bytes that are not a protocol message
 /// are logged `bad_message` and dropped), the operator's tasks for this camera due now (from
 /// the scenario: the node takes the pedestrian's signature from its own pixels, or logs
-/// `task_refused` when the pedestrian is not in its view), what it sensed; then the controller's
+/// `task_refused` when the pedestrian is not in its view), what it sensed; then the strategy's
 /// messages go out through the node network, its events into the log, and the head slews one
 /// tick toward the commanded pose. With `world` null the node has no sensor (network tests).
 ///

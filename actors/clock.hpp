@@ -5,9 +5,9 @@
 #include <cstdint>
 #include <memory>
 
+#include "actors/pacing.hpp"
 #include "actors/scheduling_order.hpp"
 #include "caf/fwd.hpp"
-#include "live/pacing.hpp"
 
 namespace argus::actors {
 
@@ -25,7 +25,7 @@ struct clock_settings {
   std::chrono::milliseconds progress_interval{250};
   /// The operator's pacing of a live run (argus serve), read between ticks instead of `speed`:
   /// its speed and pause. Null for none. Pacing only delays ticks; it never changes the run.
-  std::shared_ptr<live::pacing> pacing;
+  std::shared_ptr<actors::pacing> pacing;
   /// Runs the clock on a thread of its own rather than on the scheduler's workers
   /// (clock_on_own_thread() says when that pays).
   bool own_thread = false;
@@ -46,7 +46,7 @@ struct clock_settings {
 bool clock_on_own_thread(unsigned threads, std::size_t participants,
                          scheduling_order order = scheduling_order::turn_order);
 
-/// Spawns the lockstep virtual-time clock (DESIGN.md, "Time").
+/// Spawns the lockstep virtual-time clock (docs/runtime.md, "Time").
 ///
 /// Messages it understands:
 /// - `(join_atom, actor, participant_info)`: register a participant; takes effect at the next

@@ -6,7 +6,7 @@
 namespace argus::actors {
 
 /// The phases of one tick, run in this order; every participant due in a phase acknowledges
-/// before the next phase starts (DESIGN.md, "Time").
+/// before the next phase starts (docs/runtime.md, "A tick").
 enum class phase : std::uint8_t {
   faults = 0,   ///< scheduled faults and operator tasks take effect
   world = 1,    ///< crowd partitions step pedestrians and publish a snapshot

@@ -20,6 +20,8 @@
 #include "actors/world_coordinator.hpp"
 #include "config/ticks.hpp"
 #include "config/whole_file.hpp"
+#include "controller/strategy_registry.hpp"
+#include "eval/instruments.hpp"
 #include "eval/metrics.hpp"
 #include "eval/mot_export.hpp"
 #include "eval/run_files.hpp"
@@ -61,6 +63,47 @@ void evaluate_run(const config::scenario& scenario, const world::station& statio
   if (options.mot) eval::write_mot(dir / "mot", scenario, log, end_tick);
 }
 
+// What the host watches camera nodes for: the operator's picks for the evaluation, and the
+// live console's display (pose, frame, the sensor's boxes, traffic).
+class run_observer final : public node_observer {
+ public:
+  run_observer(std::shared_ptr<eval::observation_log> log,
+               std::shared_ptr<live::console_state> console)
+      : log_(std::move(log)), console_(std::move(console)) {}
+
+  void traffic(int, std::uint64_t sent, std::uint64_t received) override {
+    if (console_) console_->add_traffic(sent, received);
+  }
+  void picked(const task_pick& p) override {
+    log_->add_origin({p.task, p.pedestrian, p.camera, p.tick, choice_of(p.by)});
+  }
+  void turn_done(int camera, std::int64_t tick, const vision::ptz_state& pose, const cv::Mat& image,
+                 const std::vector<controller::look_result>& looks) override {
+    if (!console_) return;
+    std::vector<cv::Rect2d> boxes;
+    for (const auto& look : looks)
+      if (look.found) boxes.push_back(look.box);
+    console_->publish_camera(camera, tick, pose.pan_deg, pose.tilt_deg, pose.field_of_view_deg,
+                             image, std::move(boxes));
+  }
+
+ private:
+  static eval::target_choice choice_of(config::task_target by) {
+    switch (by) {
+      case config::task_target::pedestrian:
+        return eval::target_choice::pedestrian;
+      case config::task_target::pixel:
+        return eval::target_choice::pixel;
+      case config::task_target::first_to_enter:
+        return eval::target_choice::first_to_enter;
+    }
+    return eval::target_choice::pedestrian;
+  }
+
+  std::shared_ptr<eval::observation_log> log_;
+  std::shared_ptr<live::console_state> console_;
+};
+
 }  // namespace
 
 run_outcome run_scenario(const config::scenario& scenario, bool show_progress) {
@@ -70,6 +113,8 @@ run_outcome run_scenario(const config::scenario& scenario, bool show_progress) {
 }
 
 run_outcome run_scenario(const config::scenario& scenario, const run_options& options) {
+  // A strategy that cannot be made fails here, naming the field, before any actor runs.
+  controller::resolve_strategy(scenario);
   const bool show_progress = options.show_progress;
   auto threads = scenario.run.threads != 0 ? scenario.run.threads
                                            : std::max(1u, std::thread::hardware_concurrency());
@@ -101,27 +146,36 @@ run_outcome run_scenario(const config::scenario& scenario, const run_options& op
   if (!scenario.sensing.sensor_model.empty())
     cameras_world->sensor_model = vision::load_sensor_model(sensor_model_path(scenario).string());
   auto log = std::make_shared<eval::observation_log>(options.mot);
-  cameras_world->log = log;
-  cameras_world->board->record_targets_in(log);
-  if (scenario.controller.strategy == config::control_strategy::oracle)
-    cameras_world->oracle = std::make_shared<oracle_board>(scenario, world_settings.station, log);
-  else {
-    if (scenario.sensing.geometry == config::group_geometry::ground_truth ||
-        scenario.sensing.reappearance == config::reappearance_model::ground_truth)
-      cameras_world->sightings = std::make_shared<sighting_board>();
-    if (scenario.sensing.geometry == config::group_geometry::calibrated)
-      cameras_world->positions = std::make_shared<position_board>();
-  }
+  cameras_world->board->subscribe(
+      [log](const std::shared_ptr<const world::snapshot>& frame) { sample_targets(*log, *frame); });
+  auto instruments = std::make_shared<const eval::instruments>(
+      scenario, world_settings.station, [board = cameras_world->board] { return board->latest(); },
+      log);
+  cameras_world->wrap_sensor = [instruments](const config::camera_settings& camera,
+                                             std::unique_ptr<sensing::sensor> sensor) {
+    return instruments->wrap(camera, std::move(sensor));
+  };
+  cameras_world->wrap_strategy = [instruments](const config::camera_settings& camera,
+                                               std::unique_ptr<controller::strategy> strategy) {
+    return instruments->wrap(camera, std::move(strategy));
+  };
+  cameras_world->oracle_for = [instruments](const config::camera_settings& camera) {
+    return instruments->oracle_for(camera);
+  };
   world_settings.board = cameras_world->board;
   const auto& live = options.live;
   std::shared_ptr<operator_board> operators;
+  std::shared_ptr<live::console_state> console;
   if (live) {
     // The session outlives the run (the caller holds it): the aliases keep it alive regardless.
     operators = std::make_shared<operator_board>();
     cameras_world->operators = operators;
-    cameras_world->console = std::shared_ptr<live::console_state>(live, &live->console);
-    cameras_world->board->show_on(cameras_world->console);
+    console = std::shared_ptr<live::console_state>(live, &live->console);
+    cameras_world->board->subscribe([console](const std::shared_ptr<const world::snapshot>& frame) {
+      console->publish_snapshot(frame);
+    });
   }
+  cameras_world->observer = std::make_shared<run_observer>(log, console);
   if (options.video) {
     video_settings vs;
     vs.file = outcome.output_dir / "video" / "feeds.avi";
@@ -168,7 +222,7 @@ run_outcome run_scenario(const config::scenario& scenario, const run_options& op
   cs.end_tick = end_tick;
   cs.tick_seconds = tick_seconds;
   cs.speed = scenario.run.speed;
-  if (live) cs.pacing = std::shared_ptr<live::pacing>(live, &live->pace);
+  if (live) cs.pacing = std::shared_ptr<pacing>(live, &live->pace);
   const protocol::topology topo(scenario);
   // Links are never ticked: the clock's round trips are the cameras'.
   cs.own_thread = clock_on_own_thread(threads, scenario.cameras.size());

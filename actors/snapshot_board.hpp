@@ -1,10 +1,10 @@
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <mutex>
+#include <vector>
 
-#include "eval/observation_log.hpp"
-#include "live/console_state.hpp"
 #include "world/snapshot.hpp"
 
 namespace argus::actors {
@@ -19,18 +19,18 @@ namespace argus::actors {
 /// list of observers is fixed when the run starts; every camera, old or new, finds the board.
 class snapshot_board {
  public:
-  /// Publishes `frame` (phase network), and samples the tasks' targets in it when the run is
-  /// evaluated.
+  /// Called with every publication, in the order added (the evaluation samples the targets,
+  /// the live console shows it).
+  using subscriber = std::function<void(const std::shared_ptr<const world::snapshot>&)>;
+
+  /// Publishes `frame` (phase network).
   void publish(std::shared_ptr<const world::snapshot> frame) {
-    if (log_) sample_targets(*log_, *frame);
-    if (console_) console_->publish_snapshot(frame);
+    for (const auto& s : subscribers_) s(frame);
     std::lock_guard<std::mutex> guard(mutex_);
     latest_ = std::move(frame);
   }
-  /// Where publications record the targets' true states (before the run starts).
-  void record_targets_in(std::shared_ptr<eval::observation_log> log) { log_ = std::move(log); }
-  /// Where publications also go to be shown live (argus serve; before the run starts).
-  void show_on(std::shared_ptr<live::console_state> console) { console_ = std::move(console); }
+  /// Adds a subscriber (before the run starts).
+  void subscribe(subscriber s) { subscribers_.push_back(std::move(s)); }
   /// The latest snapshot (phase cameras); null before the first.
   std::shared_ptr<const world::snapshot> latest() const {
     std::lock_guard<std::mutex> guard(mutex_);
@@ -38,23 +38,7 @@ class snapshot_board {
   }
 
  private:
-  static void sample_targets(eval::observation_log& log, const world::snapshot& frame) {
-    std::vector<eval::target_sample> samples;
-    for (const auto& o : log.origins()) {
-      eval::target_sample s{static_cast<std::int64_t>(frame.tick()), o.task, o.pedestrian};
-      if (const auto* who = frame.find(o.pedestrian)) {
-        s.x_m = who->position.x();
-        s.y_m = who->position.y();
-        s.height_m = who->look.height_m;
-        s.present = true;
-      }
-      samples.push_back(s);
-    }
-    if (!samples.empty()) log.add_samples(std::move(samples));
-  }
-
-  std::shared_ptr<eval::observation_log> log_;
-  std::shared_ptr<live::console_state> console_;
+  std::vector<subscriber> subscribers_;
   mutable std::mutex mutex_;
   std::shared_ptr<const world::snapshot> latest_;
 };

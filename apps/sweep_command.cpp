@@ -17,6 +17,7 @@
 #include "config/duration.hpp"
 #include "config/scenario_error.hpp"
 #include "config/scenario_loader.hpp"
+#include "controller/strategy_registry.hpp"
 #include "fmt/format.h"
 #include "report/binary_file.hpp"
 #include "report/paired_differences.hpp"
@@ -29,6 +30,7 @@ namespace {
 struct sweep_arguments {
   std::string scenario;
   std::uint64_t seeds = 1;
+  std::uint64_t first_seed = 1;
   std::vector<std::string> set;
   unsigned jobs = std::max(1u, std::thread::hardware_concurrency());
   unsigned threads = 1;
@@ -105,7 +107,7 @@ class sweep {
   sweep(const sweep_arguments& args, std::vector<report::swept_parameter> parameters,
         std::filesystem::path dir)
       : args_(args), parameters_(std::move(parameters)), dir_(std::move(dir)) {
-    runs_ = report::plan_runs(parameters_, args.seeds);
+    runs_ = report::plan_runs(parameters_, args.seeds, args.first_seed);
   }
 
   int execute() {
@@ -290,8 +292,12 @@ int run_sweep(const sweep_arguments& args) {
   // not a folder of failed runs.
   std::string scenario_name;
   try {
-    for (const auto& run : report::plan_runs(parameters, 1))
-      scenario_name = config::load_scenario(args.scenario, overrides_of(parameters, run)).name;
+    for (const auto& run : report::plan_runs(parameters, 1)) {
+      const auto scenario = config::load_scenario(args.scenario, overrides_of(parameters, run));
+      // A strategy plug-in that does not load is refused here, once, as a bad value is.
+      controller::resolve_strategy(scenario);
+      scenario_name = scenario.name;
+    }
   } catch (const config::scenario_error& e) {
     std::cerr << e.what() << '\n';
     return bad_input;
@@ -326,8 +332,13 @@ void add_sweep_command(CLI::App& app, int& result) {
       "sweep", "Run a scenario over a grid of --set values and seeds, in parallel processes");
   auto args = std::make_shared<sweep_arguments>();
   cmd->add_option("SCENARIO", args->scenario, "Scenario YAML file")->required();
-  cmd->add_option("--seeds", args->seeds, "Seeds per grid point: 1 to N (default 1)")
+  cmd->add_option("--seeds", args->seeds,
+                  "Seeds per grid point: --first-seed to --first-seed + N - 1 (default 1)")
       ->check(integer_in(1, 100000));
+  cmd->add_option("--first-seed", args->first_seed,
+                  "The first seed (default 1): e.g. 1001 with --seeds 40 reports on seeds "
+                  "1001-1040, apart from those settings were chosen on")
+      ->check(integer_in(1, 1000000000));
   cmd->add_option("--set", args->set,
                   "A field and its values, e.g. network.loss_probability=0,0.1,0.2 (repeatable: "
                   "the grid is every combination)")

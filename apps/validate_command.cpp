@@ -6,6 +6,7 @@
 #include "config/scenario_error.hpp"
 #include "config/scenario_loader.hpp"
 #include "config/scenario_writer.hpp"
+#include "controller/strategy_registry.hpp"
 #include "world/crowd.hpp"
 #include "world/layout_loader.hpp"
 #include "world/station.hpp"
@@ -25,6 +26,7 @@ void add_validate_command(CLI::App& app, int& result) {
   cmd->callback([path, set, &result] {
     try {
       auto scenario = config::load_scenario(*path, overrides_from(*set));
+      controller::resolve_strategy(scenario);
       // The layout is part of the input: the same bad layout fails here as in every command.
       const auto station = world::station::load(world::layout_path(scenario));
       (void)world::crowd_settings::from(scenario).spawning(*station);

@@ -164,15 +164,6 @@ struct enum_names<clothing> {
 };
 
 /// Names for the controller's `strategy`.
-template <>
-struct enum_names<control_strategy> {
-  static constexpr std::array<enum_entry<control_strategy>, 3> entries{{
-      {control_strategy::paper, "paper"},
-      {control_strategy::no_collaboration, "no_collaboration"},
-      {control_strategy::oracle, "oracle"},
-  }};
-};
-
 /// Names for the sensing `tracker_scales`.
 template <>
 struct enum_names<tracker_scales> {

@@ -296,12 +296,6 @@ struct sensing_settings {
   friend bool operator==(const sensing_settings&, const sensing_settings&) = default;
 };
 
-/// Who decides which cameras observe a target: the paper's protocol (auctions, groups,
-/// handoffs, conflict resolution); no collaboration (the tasked camera tracks alone, as a
-/// baseline); or a central oracle that assigns cameras from ground truth (an upper bound that
-/// no real network can reach: it knows where everyone is and needs no messages).
-enum class control_strategy { paper, no_collaboration, oracle };
-
 /// Where the central oracle's cameras take her signature from: each from its own view of her
 /// the first time it points at her (own_view, the default), or all from the operator's pick in
 /// the tasked camera, the signature the paper's protocol passes in its queries (operator).
@@ -328,7 +322,13 @@ struct controller_settings {
   double relevance_sigma_tilt_deg = 5.0;
   conflict_solver solver = conflict_solver::best_solv;
   merge_rule merge = merge_rule::highest_id;
-  control_strategy strategy = control_strategy::paper;
+  /// Who decides what each camera does (controller/strategy.hpp, docs/strategies.md): a
+  /// registered strategy's name — `paper` (the paper's protocol: auctions, groups, handoffs,
+  /// conflict resolution), `no_collaboration` (the tasked camera tracks alone, a baseline),
+  /// `oracle` (a central oracle that assigns cameras from ground truth: an upper bound that no
+  /// real network can reach), or one a plug-in registers; `plugin:PATH` (the strategy the
+  /// shared library at PATH registers); or `python:MODULE:CLASS` (a Python class).
+  std::string strategy = "paper";
   /// The central oracle only (strategy: oracle): its cameras' signature, and whether they zoom
   /// so that she is a third of the frame tall (true) or point at her with their default field
   /// of view (false). Instruments that take the oracle's lead apart; the defaults are the

@@ -4,7 +4,9 @@
 #include <fmt/ranges.h>
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <array>
+#include <cctype>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -333,6 +335,39 @@ class scenario_parser {
     return true;
   }
 
+  // controller.strategy: a name, `plugin:PATH` or `python:MODULE:CLASS`. Whether the name is
+  // registered, or the library or module loads, is known only when the run starts.
+  void check_strategy(mapping_reader& controller, const std::string& value) {
+    auto report = [&](std::string message) {
+      reader_.report(*controller.find("strategy"), controller.field("strategy"),
+                     std::move(message));
+    };
+    auto is_name = [](std::string_view text) {
+      return !text.empty() && std::all_of(text.begin(), text.end(), [](char c) {
+        return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_' || c == '.';
+      });
+    };
+    if (value.starts_with("plugin:")) {
+      if (value.size() == 7)
+        report("expected plugin:PATH, the path of a shared library; got no path");
+      return;
+    }
+    if (value.starts_with("python:")) {
+      const auto rest = std::string_view(value).substr(7);
+      const auto colon = rest.rfind(':');
+      if (colon == std::string_view::npos || !is_name(rest.substr(0, colon)) ||
+          !is_name(rest.substr(colon + 1)))
+        report("expected python:MODULE:CLASS (e.g. python:my_strategies:Follow), got '" + value +
+               "'");
+      return;
+    }
+    if (!is_name(value) || value.find('.') != std::string::npos)
+      report(
+          "expected a strategy's name (paper, no_collaboration, oracle or one a plug-in "
+          "registers), plugin:PATH or python:MODULE:CLASS; got '" +
+          value + "'");
+  }
+
   void read_imaging(const YAML::Node& node, const std::string& path, imaging_model& out) {
     mapping_reader imaging(reader_, node, path, imaging_keys);
     if (const auto resolution = imaging.find("resolution")) {
@@ -459,7 +494,7 @@ class scenario_parser {
     controller.read("relevance_sigma_tilt_deg", out.relevance_sigma_tilt_deg, positive);
     controller.read("solver", out.solver);
     controller.read("merge", out.merge);
-    controller.read("strategy", out.strategy);
+    if (controller.read("strategy", out.strategy)) check_strategy(controller, out.strategy);
     controller.read("oracle_signature", out.oracle_signature_from);
     controller.read("oracle_zoom", out.oracle_zoom);
     controller.read("zoom_in_track", out.zoom_in_track);

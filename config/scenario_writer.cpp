@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <iterator>
 
 #include "config/duration.hpp"
@@ -39,6 +40,13 @@ std::string quoted(const std::string& text) {
   }
   out += '"';
   return out;
+}
+
+// Whether `text` is a bare identifier, written as it is.
+bool plain_name(const std::string& text) {
+  return !text.empty() && std::all_of(text.begin(), text.end(), [](char c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
+  });
 }
 
 /// fmt's default is the shortest decimal that reads back to the same double.
@@ -243,7 +251,8 @@ std::string to_yaml(const scenario& s) {
   out.entry(1, "relevance_sigma_tilt_deg", number(controller.relevance_sigma_tilt_deg));
   out.entry(1, "solver", yaml_name(controller.solver));
   out.entry(1, "merge", yaml_name(controller.merge));
-  out.entry(1, "strategy", yaml_name(controller.strategy));
+  out.entry(1, "strategy",
+            plain_name(controller.strategy) ? controller.strategy : quoted(controller.strategy));
   out.entry(1, "oracle_signature", yaml_name(controller.oracle_signature_from));
   out.entry(1, "oracle_zoom", boolean(controller.oracle_zoom));
   out.entry(1, "zoom_in_track", boolean(controller.zoom_in_track));

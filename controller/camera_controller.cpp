@@ -56,30 +56,10 @@ vision::tracking_fsm_settings fsm_settings(const config::controller_settings& co
 
 }  // namespace
 
-node_identity node_identity::from(const config::camera_settings& camera) {
-  node_identity me;
-  me.id = camera.id;
-  me.limits = vision::ptz_limits::from(camera);
-  me.home = vision::ptz_state{camera.pan_deg, camera.tilt_deg, camera.field_of_view_deg};
-  me.frame = vision::frame_size{static_cast<int>(camera.imaging.width_px),
-                                static_cast<int>(camera.imaging.height_px)};
-  return me;
-}
-
-std::string_view name_of(node_state s) {
-  switch (s) {
-    case node_state::idle:
-      return "idle";
-    case node_state::computing_relevance:
-      return "computing_relevance";
-    case node_state::performing_task:
-      return "performing_task";
-  }
-  return "idle";
-}
-
-camera_controller::camera_controller(node_identity me, const config::scenario& scenario)
+camera_controller::camera_controller(node_identity me, const config::scenario& scenario,
+                                     bool collaborate)
     : me_(std::move(me)),
+      collaborate_(collaborate),
       settings_(scenario.controller),
       tick_(scenario.run.tick),
       message_timeout_(scenario.network.message_timeout),
@@ -146,6 +126,16 @@ void camera_controller::emit(controller_output& out, std::string_view kind,
   auto json = fmt::format(R"("camera":{})", me_.id);
   if (!fields.empty()) json += "," + fields;
   out.events.push_back(controller_event{std::string(kind), std::move(json)});
+}
+
+frame_plan camera_controller::plan(std::int64_t, bool looking) {
+  frame_plan p;
+  p.wants_frame = looking && state() != node_state::idle;
+  return p;
+}
+
+strategy_status camera_controller::status() const {
+  return {state(), task(), role_, fsm_.state()};
 }
 
 controller_output camera_controller::step(const controller_input& in) {
@@ -715,7 +705,7 @@ void camera_controller::lead(controller_output& out) {
   apply_demotions(a, out);
   if (!task_ || role_ != group_role::leader) return;
   // The baseline without collaboration: the tasked camera never recruits.
-  if (settings_.strategy == config::control_strategy::no_collaboration) return;
+  if (!collaborate_) return;
   if (csp_ && (csp_->waiting.empty() || now_ >= csp_->deadline)) solve_csp(out);
   if (auction_ && now_ >= auction_->closes_at) {
     close_auction(out);

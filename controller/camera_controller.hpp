@@ -10,30 +10,11 @@
 #include "config/scenario.hpp"
 #include "controller/controller_io.hpp"
 #include "controller/demotion_negotiator.hpp"
+#include "controller/strategy.hpp"
 #include "vision/frame_size.hpp"
 #include "vision/tracker.hpp"
 
 namespace argus::controller {
-
-/// What a camera node knows of itself: its id, its head's limits and rates, its default pose
-/// and its frame size. No position, no calibration (Section I-B).
-struct node_identity {
-  int id = 0;
-  vision::ptz_limits limits;
-  vision::ptz_state home;
-  vision::frame_size frame;
-  /// The identity of a scenario camera.
-  static node_identity from(const config::camera_settings& camera);
-};
-
-/// The top level of Fig. 10.
-enum class node_state { idle, computing_relevance, performing_task };
-
-/// A node's part in its group.
-enum class group_role { member, leader };
-
-/// Its name in the event log: "idle", "computing_relevance", "performing_task".
-std::string_view name_of(node_state s);
 
 /// The camera controller of one node (Section III-C, Fig. 10) and its part in the grouping
 /// protocol (Section IV, Figs. 13-15), in plain C++: each frame it takes what the node sensed,
@@ -47,12 +28,16 @@ std::string_view name_of(node_state s);
 ///    +------------ left the group, task over (reset to home pose) ----+
 ///
 /// An operator query makes the node a single-node group it leads (performing_task).
-class camera_controller {
+class camera_controller final : public strategy {
  public:
-  camera_controller(node_identity me, const config::scenario& scenario);
+  /// `collaborate` false: the no_collaboration baseline, whose tasked camera never recruits.
+  camera_controller(node_identity me, const config::scenario& scenario, bool collaborate = true);
 
+  /// Wants a frame while looking and not idle (an idle node looks at nothing).
+  frame_plan plan(std::int64_t tick, bool looking) override;
   /// One frame.
-  controller_output step(const controller_input& in);
+  controller_output step(const controller_input& in) override;
+  strategy_status status() const override;
 
   /// The top-level state.
   node_state state() const noexcept;
@@ -166,6 +151,7 @@ class camera_controller {
   bool locked() const;
 
   node_identity me_;
+  bool collaborate_ = true;
   config::controller_settings settings_;
   config::seconds tick_;
   config::seconds message_timeout_;

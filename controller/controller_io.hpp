@@ -10,6 +10,7 @@
 
 #include "opencv2/core/types.hpp"
 #include "protocol/group_messages.hpp"
+#include "protocol/net_message.hpp"
 #include "vision/ptz_camera.hpp"
 
 namespace argus::controller {
@@ -52,13 +53,25 @@ struct received_message {
   protocol::group_message message;
 };
 
+/// A signature the sensor took at the strategy's request (controller_output::acquire).
+struct acquired_signature {
+  task_id task = 0;
+  protocol::signature signature;
+};
+
 /// One frame's inputs.
 struct controller_input {
   std::int64_t tick = 0;
   /// The camera's pose in this frame.
   vision::ptz_state pose;
+  /// Whether the node took a frame this tick (it does when the strategy asked to look for
+  /// someone or wanted a frame; an idle node takes none). A frame whose rendering failed counts:
+  /// its looks then find nothing.
+  bool sensed = false;
   /// Results for the looks requested in the previous step, in this frame.
   std::vector<look_result> looks;
+  /// The signatures taken in the last frame at this strategy's request (its `acquire`).
+  std::vector<acquired_signature> acquired;
   /// Operator requests addressed to this camera.
   std::vector<operator_query> queries;
   /// Messages delivered to this node, in canonical order.
@@ -79,6 +92,15 @@ struct controller_event {
   std::string fields_json;
 };
 
+/// Take the model of whoever is in `box` of the frame just sensed as task `task`'s target: the
+/// sensor takes her signature there and starts following her, the node looks for her in the
+/// next frame (as if asked to), and the signature comes back in the next input's `acquired`.
+/// Ignored when the frame has nothing to take it from (a failed rendering).
+struct acquire_request {
+  task_id task = 0;
+  cv::Rect2d box;
+};
+
 /// One frame's outputs.
 struct controller_output {
   std::vector<outgoing_message> messages;
@@ -87,6 +109,8 @@ struct controller_output {
   /// What to look for in the next frame; empty = the node needs no image.
   std::vector<look_request> looks;
   std::vector<controller_event> events;
+  /// Signatures to take from this frame (see acquire_request).
+  std::vector<acquire_request> acquire;
 };
 
 }  // namespace argus::controller

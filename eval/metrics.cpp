@@ -374,7 +374,7 @@ nlohmann::json metrics_json(const config::scenario& scenario, const evaluation& 
   return {{"definitions", "docs/metrics.md"},
           {"scenario", scenario.name},
           {"seed", scenario.run.seed},
-          {"strategy", std::string(config::yaml_name(scenario.controller.strategy))},
+          {"strategy", scenario.controller.strategy},
           {"sensing", std::string(config::yaml_name(scenario.sensing.mode))},
           {"duration_s", virtual_seconds},
           {"tasks", tasks},

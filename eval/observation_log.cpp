@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "world/snapshot.hpp"
+
 namespace argus::eval {
 
 void observation_log::add_frame(camera_frame frame) {
@@ -67,6 +69,21 @@ observation_log::contents observation_log::take() {
     return std::tie(a.tick, a.task) < std::tie(b.tick, b.task);
   });
   return out;
+}
+
+void sample_targets(observation_log& log, const world::snapshot& frame) {
+  std::vector<target_sample> samples;
+  for (const auto& o : log.origins()) {
+    target_sample s{static_cast<std::int64_t>(frame.tick()), o.task, o.pedestrian};
+    if (const auto* who = frame.find(o.pedestrian)) {
+      s.x_m = who->position.x();
+      s.y_m = who->position.y();
+      s.height_m = who->look.height_m;
+      s.present = true;
+    }
+    samples.push_back(s);
+  }
+  if (!samples.empty()) log.add_samples(std::move(samples));
 }
 
 }  // namespace argus::eval

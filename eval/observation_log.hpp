@@ -10,6 +10,10 @@
 
 #include "eval/records.hpp"
 
+namespace argus::world {
+class snapshot;
+}  // namespace argus::world
+
 namespace argus::eval {
 
 /// Where a run's nodes and world leave what the evaluation needs. Camera nodes add their own
@@ -54,5 +58,8 @@ class observation_log {
   mutable std::mutex mutex_;
   contents data_;
 };
+
+/// Records where every task's target is in `frame` (published once per tick, phase network).
+void sample_targets(observation_log& log, const world::snapshot& frame);
 
 }  // namespace argus::eval

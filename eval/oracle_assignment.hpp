@@ -23,7 +23,7 @@ struct oracle_target {
   unsigned cameras = 1;
 };
 
-/// The central oracle's camera assignment (config::control_strategy::oracle): an upper bound
+/// The central oracle's camera assignment (controller.strategy: oracle): an upper bound
 /// that knows where everyone is and needs no messages. Tasks in id order take, each, the
 /// `cameras` nearest live cameras that can reach their target (eval::reachable) and are not
 /// taken yet; a camera keeps its task unless another is more than a quarter nearer, so that

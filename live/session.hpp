@@ -1,10 +1,10 @@
 #pragma once
 
+#include "actors/pacing.hpp"
 #include "config/scenario.hpp"
 #include "live/command_log.hpp"
 #include "live/command_queue.hpp"
 #include "live/console_state.hpp"
-#include "live/pacing.hpp"
 
 namespace argus::live {
 
@@ -16,7 +16,7 @@ struct session {
 
   command_queue queue;
   command_log log;
-  pacing pace;
+  actors::pacing pace;
   console_state console;
 };
 

@@ -72,7 +72,7 @@ std::string shortened(const std::string& prefix) {
 }
 
 std::vector<planned_run> plan_runs(const std::vector<swept_parameter>& parameters,
-                                   std::uint64_t seeds) {
+                                   std::uint64_t seeds, std::uint64_t first_seed) {
   std::vector<std::vector<std::string>> points{{}};
   for (const auto& p : parameters) {
     std::vector<std::vector<std::string>> longer;
@@ -96,7 +96,7 @@ std::vector<planned_run> plan_runs(const std::vector<swept_parameter>& parameter
     const std::string base = prefix;
     for (int n = 2; !prefixes.insert(prefix).second; ++n)
       prefix = base + "v" + std::to_string(n) + "__";
-    for (std::uint64_t seed = 1; seed <= seeds; ++seed)
+    for (std::uint64_t seed = first_seed; seed < first_seed + seeds; ++seed)
       out.push_back({prefix + "seed=" + std::to_string(seed), point, seed});
   }
   return out;

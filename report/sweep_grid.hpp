@@ -26,7 +26,8 @@ struct planned_run {
 /// seed 1..`seeds`. A run's id reads `key=value__key=value__seed=S` (last key segments;
 /// characters a folder name should not hold become '_'), so a resumed sweep finds a run's folder
 /// again as long as its values are the same, whatever else changed in the grid.
+/// Seeds run from `first_seed` to `first_seed + seeds - 1`.
 std::vector<planned_run> plan_runs(const std::vector<swept_parameter>& parameters,
-                                   std::uint64_t seeds);
+                                   std::uint64_t seeds, std::uint64_t first_seed = 1);
 
 }  // namespace argus::report

@@ -15,6 +15,7 @@
 #include "vision/ptz_camera.hpp"
 #include "vision/signature_halves.hpp"
 #include "vision/signature_update.hpp"
+#include "vision/tracking_state.hpp"
 
 namespace argus::vision {
 
@@ -157,9 +158,6 @@ class tracker {
   int model_height_ = 0;
   int model_updates_ = 0;
 };
-
-/// The child states of PerformingTask (Fig. 10, inset), plus `failed` once Search times out.
-enum class tracking_state { track, wait, search, failed };
 
 /// Settings of the child FSM beyond Table 2's timeouts.
 struct tracking_fsm_settings {

@@ -22,6 +22,7 @@
 #include "caf/test/unit_test_impl.hpp"
 #include "protocol/topology.hpp"
 #include "tests/actors/recording_fixture.hpp"
+#include "tests/actors/still_world.hpp"
 #include "world/layout_loader.hpp"
 
 using namespace argus;
@@ -29,17 +30,6 @@ using namespace argus::actors;
 using namespace argus::actors::testing;
 
 namespace {
-
-world::pedestrian_state standing(int id, double x, double y, world::rgb8 shirt) {
-  world::pedestrian_state p;
-  p.id = id;
-  p.position = {x, y};
-  p.look.shirt = shirt;
-  p.look.trousers = {40, 40, 120};
-  p.look.skin = {200, 160, 130};
-  p.look.hair = {60, 40, 20};
-  return p;
-}
 
 config::scenario three_cameras() {
   config::scenario s;
@@ -51,17 +41,7 @@ config::scenario three_cameras() {
   s.controller.relevance_sigma_fov_deg = 30.0;
   s.controller.relevance_sigma_pan_deg = 60.0;
   s.controller.relevance_sigma_tilt_deg = 30.0;
-  auto camera = [](int id, double x, double y, double pan) {
-    config::camera_settings c;
-    c.id = id;
-    c.position = {x, y};
-    c.height_m = 6.0;
-    c.pan_deg = pan;
-    c.imaging.width_px = 320;
-    c.imaging.height_px = 240;
-    return c;
-  };
-  s.cameras = {camera(2, 100, 30, 135), camera(3, 100, 70, -135), camera(4, 68, 70, -45)};
+  s.cameras = {mounted(2, 100, 30, 135), mounted(3, 100, 70, -135), mounted(4, 68, 70, -45)};
   return s;
 }
 
@@ -69,26 +49,10 @@ struct fixture : recording_fixture {
   std::map<int, caf::actor> cameras;
 
   void run_cameras(const config::scenario& s, double seconds) {
-    auto world = std::make_shared<camera_world>();
-    world->station = world::station::load(world::layout_path(s));
-    world->board = std::make_shared<snapshot_board>();
-    world->sensor_model.miss_bias = -50.0;  // never misses
-    world->sensor_model.confusion_bias = -50.0;
-    world->sensor_model.box_sigma = 0.0;
-    world->board->publish(std::make_shared<const world::snapshot>(
-        *world->station, 0, std::chrono::duration<double>{0.0},
-        std::vector<world::pedestrian_state>{standing(1, 85, 50, {200, 30, 30}),
-                                             standing(2, 100, 10, {30, 200, 30})}));
-    clock_settings cs;
-    cs.end_tick = static_cast<std::int64_t>(seconds * 15.0);
-    cs.tick_seconds = s.run.tick.count();
-    auto clock = spawn_clock(sys, cs, recorder, caf::actor{});
-    auto net = spawn_network(sys, s, protocol::topology(s), clock, world);
-    cameras = net.cameras;
-    auto faults = spawn_fault_injector(sys, s, clock, std::move(net));
-    self->send(clock, join_atom_v, faults, fault_injector_participant(s));
-    self->send(clock, start_atom_v);
-    run();
+    cameras = run_still(
+        *this, s,
+        still_world(s, {standing(1, 85, 50, {200, 30, 30}), standing(2, 100, 10, {30, 200, 30})}),
+        seconds);
     CAF_REQUIRE(rec->done);
   }
 

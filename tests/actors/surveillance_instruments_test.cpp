@@ -31,7 +31,7 @@ TEST(surveillance_instruments, the_oracle_without_zoom_keeps_every_default_field
   std::map<bool, int> zoomed_rows;
   for (bool zoom : {true, false}) {
     auto s = station(60.0, "argus_surveil_oracle_zoom");
-    s.controller.strategy = config::control_strategy::oracle;
+    s.controller.strategy = "oracle";
     s.controller.oracle_zoom = zoom;
     const auto o = run_scenario(s, false);
     std::map<int, double> home;
@@ -58,7 +58,7 @@ TEST(surveillance_instruments, the_oracle_can_look_with_the_operators_signature)
     s.run.threads = 2;
     s.run.output_dir =
         (std::filesystem::temp_directory_path() / "argus_surveil_oracle_signature").string();
-    s.controller.strategy = config::control_strategy::oracle;
+    s.controller.strategy = "oracle";
     s.controller.oracle_signature_from = from;
     const auto o = run_scenario(s, false);
     EXPECT_GT(o.evaluation.tasks.at(0).coverage, 0.0) << config::yaml_name(from);

@@ -135,16 +135,14 @@ TEST(surveillance, the_task_survives_the_crash_of_its_leader) {
 }
 
 TEST(surveillance, the_oracle_bounds_the_protocol_and_the_protocol_beats_working_alone) {
-  std::map<config::control_strategy, double> coverage;
-  for (auto strategy : {config::control_strategy::paper, config::control_strategy::oracle,
-                        config::control_strategy::no_collaboration}) {
+  std::map<std::string, double> coverage;
+  for (std::string strategy : {"paper", "oracle", "no_collaboration"}) {
     auto s = station(120.0, "argus_surveil_strategy");
     s.controller.strategy = strategy;
     coverage[strategy] = run_scenario(s, false).evaluation.tasks.at(0).coverage;
   }
-  EXPECT_GT(coverage[config::control_strategy::oracle], coverage[config::control_strategy::paper]);
-  EXPECT_GT(coverage[config::control_strategy::paper],
-            coverage[config::control_strategy::no_collaboration]);
+  EXPECT_GT(coverage["oracle"], coverage["paper"]);
+  EXPECT_GT(coverage["paper"], coverage["no_collaboration"]);
 }
 
 TEST(surveillance, a_cancelled_task_is_left_by_every_camera) {

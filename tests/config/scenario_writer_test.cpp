@@ -85,7 +85,7 @@ TEST(scenario_writer, round_trips_awkward_values_exactly) {
   by_entry.cameras_wanted = 2;
   by_entry.max_cameras = 3;
   original.tasks.push_back(by_entry);
-  original.controller.strategy = control_strategy::oracle;
+  original.controller.strategy = "oracle";
   original.controller.oracle_signature_from = oracle_signature::operator_pick;
   original.controller.oracle_zoom = false;
   original.sensing.ego_motion = true;

@@ -3,7 +3,7 @@
 #include <atomic>
 #include <cstdint>
 
-namespace argus::live {
+namespace argus::actors {
 
 /// The operator's pacing of a live run: its speed (virtual over wall seconds; 0 = as fast as
 /// it goes) and whether it is paused. The server sets it; the clock reads it between ticks.
@@ -38,4 +38,4 @@ class pacing {
   std::atomic<std::uint64_t> generation_{0};
 };
 
-}  // namespace argus::live
+}  // namespace argus::actors

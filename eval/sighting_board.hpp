@@ -6,7 +6,7 @@
 #include <optional>
 #include <utility>
 
-namespace argus::actors {
+namespace argus::eval {
 
 /// sensing.group_geometry: ground_truth (an instrument, simulator side): whom each group
 /// member's box was on, frame by frame, so that a node looking for a task's target can be
@@ -56,4 +56,4 @@ class sighting_board {
   std::map<std::pair<std::int64_t, std::uint32_t>, std::map<std::pair<bool, int>, int>> frames_;
 };
 
-}  // namespace argus::actors
+}  // namespace argus::eval

@@ -13,9 +13,9 @@
 #include "world/snapshot.hpp"
 #include "world/station.hpp"
 
-namespace argus::actors {
+namespace argus::eval {
 
-/// The central oracle of control_strategy::oracle, where every camera node reads its orders.
+/// The central oracle of `controller.strategy: oracle`, where every camera node reads its orders.
 /// The assignment of a tick is made once, by the first node to ask in phase cameras, from
 /// inputs that are complete before that phase: the tick's snapshot, the tasks known before the
 /// tick, and the cameras that recorded a frame in the tick before (alive). So it is the same
@@ -23,7 +23,7 @@ namespace argus::actors {
 class oracle_board {
  public:
   oracle_board(const config::scenario& scenario, std::shared_ptr<const world::station> station,
-               std::shared_ptr<eval::observation_log> log)
+               std::shared_ptr<observation_log> log)
       : scenario_(scenario), station_(std::move(station)), log_(std::move(log)) {}
 
   /// The task camera `camera` is to perform in the frame of `snapshot`, if any.
@@ -32,8 +32,8 @@ class oracle_board {
     const auto tick = static_cast<std::int64_t>(frame.tick());
     if (tick != tick_) {
       previous_ = std::move(current_);
-      current_ = eval::assign_cameras(scenario_.cameras, log_->cameras_alive(tick - 1), frame,
-                                      *station_, targets(tick), previous_);
+      current_ = assign_cameras(scenario_.cameras, log_->cameras_alive(tick - 1), frame, *station_,
+                                targets(tick), previous_);
       tick_ = tick;
     }
     auto it = current_.find(camera);
@@ -56,8 +56,8 @@ class oracle_board {
   }
 
  private:
-  std::vector<eval::oracle_target> targets(std::int64_t tick) const {
-    std::vector<eval::oracle_target> out;
+  std::vector<oracle_target> targets(std::int64_t tick) const {
+    std::vector<oracle_target> out;
     for (const auto& o : log_->origins()) {
       if (o.tick >= tick || o.task >= scenario_.tasks.size()) continue;
       out.push_back({o.task, o.pedestrian, scenario_.tasks[o.task].cameras_max()});
@@ -67,7 +67,7 @@ class oracle_board {
 
   config::scenario scenario_;
   std::shared_ptr<const world::station> station_;
-  std::shared_ptr<eval::observation_log> log_;
+  std::shared_ptr<observation_log> log_;
   mutable std::mutex mutex_;
   std::int64_t tick_ = -1;
   std::map<int, std::uint32_t> current_;
@@ -75,4 +75,4 @@ class oracle_board {
   std::map<std::uint32_t, protocol::signature> signatures_;
 };
 
-}  // namespace argus::actors
+}  // namespace argus::eval

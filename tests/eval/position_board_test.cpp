@@ -1,11 +1,11 @@
 // sensing.group_geometry: calibrated aims and gates a node by its group's latest floor estimate
 // of her. What a node reads must not depend on which cameras have taken their turn of this tick.
 
-#include "actors/position_board.hpp"
+#include "eval/position_board.hpp"
 
 #include <gtest/gtest.h>
 
-namespace argus::actors {
+namespace argus::eval {
 namespace {
 
 vision::floor_estimate at(double x, std::int64_t tick) {
@@ -40,4 +40,4 @@ TEST(position_board, what_a_node_reads_of_earlier_frames_stays_while_this_one_is
 }
 
 }  // namespace
-}  // namespace argus::actors
+}  // namespace argus::eval

@@ -1,11 +1,11 @@
 // sensing.group_geometry: ground_truth points a node where its group saw her in the last frame.
 // Whom it is pointed at must not depend on which cameras have taken their turn of this tick.
 
-#include "actors/sighting_board.hpp"
+#include "eval/sighting_board.hpp"
 
 #include <gtest/gtest.h>
 
-namespace argus::actors {
+namespace argus::eval {
 namespace {
 
 TEST(sighting_board, the_leaders_box_comes_first_then_the_lowest_numbered_members) {
@@ -53,4 +53,4 @@ TEST(sighting_board, a_node_is_aimed_at_whom_the_group_holds_or_at_her_when_it_h
 }
 
 }  // namespace
-}  // namespace argus::actors
+}  // namespace argus::eval

@@ -8,7 +8,7 @@
 
 #include "vision/floor_estimate.hpp"
 
-namespace argus::actors {
+namespace argus::eval {
 
 /// sensing.group_geometry: calibrated: where each task's group members' calibrated cameras put
 /// their boxes on the floor, frame by frame. A board, not messages: every member's estimate
@@ -48,4 +48,4 @@ class position_board {
       tasks_;
 };
 
-}  // namespace argus::actors
+}  // namespace argus::eval
