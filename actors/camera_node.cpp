@@ -4,30 +4,18 @@
 #include <vector>
 
 #include "actors/camera_operator.hpp"
-#include "actors/link_outbox.hpp"
-#include "actors/net_arrivals.hpp"
+#include "actors/node_mail.hpp"
 #include "actors/participant_ids.hpp"
 #include "actors/render_pool.hpp"
 #include "actors/tick_context.hpp"
 #include "actors/type_ids.hpp"
 #include "fmt/format.h"
-#include "protocol/group_messages.hpp"
 #include "protocol/link_model.hpp"
-#include "protocol/node_network.hpp"
 #include "sensing/sensor_kinds.hpp"
 #include "vision/imaging_model.hpp"
 
 namespace argus::actors {
 namespace {
-
-// A message the operator or a test asks the network side to originate (the strategy's own
-// messages go straight to the network).
-struct origination {
-  int destination = protocol::broadcast;
-  std::string kind;
-  std::string body;
-  bool expects_reply = false;
-};
 
 struct camera_node_state {
   participant_info info;
@@ -88,28 +76,10 @@ std::vector<int> neighbours_of(const link_directory& links) {
 
 void flush_network(node_actor* self, tick_context& ctx) {
   auto& st = self->state;
-  // One batch per link per turn, however many network messages it carries.
-  std::map<int, std::vector<protocol::net_message>> by_link;
-  std::uint64_t sent = 0;
-  for (auto& out : st.network->take_outgoing()) {
-    by_link[out.neighbour].push_back(std::move(out.message));
-    ++sent;
-  }
+  const auto sent = batch_outgoing(*st.network, st.links, st.outbox, st.camera_id, ctx);
   if (sent > 0 && st.world && st.world->observer)
     st.world->observer->traffic(st.camera_id, sent, 0);
-  for (auto& [neighbour, batch] : by_link) {
-    auto it = st.links.find(neighbour);
-    if (it == st.links.end()) continue;
-    st.outbox.add(it->second.participant, it->second.handle, participant_ids::camera(neighbour),
-                  ctx.tick(), std::move(batch));
-  }
   if (st.outbox.window_ends(ctx.tick())) hand_to_links(self, &ctx);
-  for (const auto& change : st.network->take_changes())
-    ctx.emit(change.up ? "neighbour_up" : "neighbour_lost",
-             fmt::format(R"("camera":{},"neighbour":{})", st.camera_id, change.neighbour));
-  for (const auto& f : st.network->take_failures())
-    ctx.emit("peer_failed",
-             fmt::format(R"("camera":{},"peer":{},"request":"{}")", st.camera_id, f.peer, f.kind));
 }
 
 vision::camera_view view_of(const camera_node_state& st) {
@@ -194,39 +164,6 @@ void finish_turn(node_actor* self, const cv::Mat& image) {
   self->become(behaviour_for(st));
 }
 
-// What reached the node this tick: protocol messages for the strategy; anything else is the
-// operator's or a test's, logged (a liveness probe is answered).
-void take_mail(camera_node_state& st, std::int64_t tick, std::uint8_t p) {
-  auto& ctx = *st.ctx;
-  std::uint64_t received = 0;
-  st.arrivals.for_each_due(tick, p, [&](const mail_stamp&, int from, protocol::net_message& m) {
-    st.network->receive(tick, from, m);
-    ++received;
-  });
-  if (received > 0 && st.world && st.world->observer)
-    st.world->observer->traffic(st.camera_id, 0, received);
-  for (auto& m : st.network->take_delivered()) {
-    if (auto decoded = protocol::decode(m.kind.name(), m.body)) {
-      st.input.messages.push_back({m.origin, std::move(*decoded)});
-      continue;
-    }
-    if (protocol::is_group_kind(m.kind.name())) {
-      ctx.emit("bad_message", fmt::format(R"("camera":{},"origin":{},"message":"{}","bytes":{})",
-                                          st.camera_id, m.origin, m.kind, m.body.size()));
-      continue;
-    }
-    if (m.kind == "ping") st.network->reply(m, "pong", {});
-    ctx.emit("net_received", fmt::format(R"("camera":{},"origin":{},"message":"{}","hops":{})",
-                                         st.camera_id, m.origin, m.kind, m.hops));
-  }
-  for (auto& [stamp, o] : st.to_originate.take_due(tick, p)) {
-    auto id = o.expects_reply ? st.network->request(tick, o.destination, o.kind, std::move(o.body))
-                              : st.network->send(o.destination, o.kind, std::move(o.body));
-    ctx.emit("net_sent", fmt::format(R"("camera":{},"destination":{},"message":"{}","id":{})",
-                                     st.camera_id, o.destination, o.kind, id));
-  }
-}
-
 void take_turn(node_actor* self, std::int64_t tick, std::uint8_t p, const caf::actor& clock) {
   auto& st = self->state;
   st.last_turn = mail_stamp{tick, p, st.info.id, 0};
@@ -240,7 +177,10 @@ void take_turn(node_actor* self, std::int64_t tick, std::uint8_t p, const caf::a
              fmt::format(R"("camera":{},"type":"{}")", st.camera_id, st.ptz ? "ptz" : "static"));
   }
   st.input.tick = tick;
-  take_mail(st, tick, p);
+  const auto received = read_mail(*st.network, st.arrivals, st.to_originate, st.camera_id, tick, p,
+                                  ctx, st.input.messages);
+  if (received > 0 && st.world && st.world->observer)
+    st.world->observer->traffic(st.camera_id, 0, received);
   if (st.world && st.world->operators) st.operator_desk->take_orders(*st.world->operators);
   st.input.cancels = st.operator_desk->take_due(tick, st.first_turn);
   auto plan = st.strategy->plan(tick, !st.looks.empty());

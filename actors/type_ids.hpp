@@ -1,6 +1,6 @@
 #pragma once
 
-// Every message type and atom of the actor layer, registered once (STYLE.md). Include this
+// Every message type and atom of the actor layer, registered once. Include this
 // header, not caf/all.hpp piecemeal, wherever argus messages are sent or matched.
 
 #include <cstdint>
