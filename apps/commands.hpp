@@ -44,6 +44,10 @@ void add_generate_command(CLI::App& app, int& result);
 /// `result` to its exit code.
 void add_serve_command(CLI::App& app, int& result);
 
+/// Adds `argus strategies` (the strategies controller.strategy can name) to `app`; sets
+/// `result` to its exit code.
+void add_strategies_command(CLI::App& app, int& result);
+
 /// Adds `argus validate` to `app`; its callback sets `result` to the command's exit code.
 void add_validate_command(CLI::App& app, int& result);
 

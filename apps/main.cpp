@@ -42,6 +42,7 @@ int main(int argc, char** argv) {
   argus::apps::add_run_command(app, result);
   argus::apps::add_serve_command(app, result);
   argus::apps::add_validate_command(app, result);
+  argus::apps::add_strategies_command(app, result);
   argus::apps::add_plan_command(app, result);
   argus::apps::add_crowd_command(app, result);
   argus::apps::add_render_command(app, result);

@@ -68,40 +68,8 @@ class collecting_registrar final : public strategy_registrar {
   throw config::scenario_error({std::move(p)});
 }
 
-// Loads the plug-in at `path` once; returns the names it registered.
-std::vector<std::string> load_plugin(const config::scenario& scenario, const std::string& path) {
-  auto& r = the_registry();
-  {
-    std::lock_guard<std::mutex> guard(r.mutex);
-    if (auto it = r.plugins.find(path); it != r.plugins.end()) return it->second;
-  }
-  void* library = ::dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
-  if (library == nullptr) {
-    const char* why = ::dlerror();
-    refuse(scenario, fmt::format("the strategy plug-in '{}' does not load: {}", path,
-                                 why != nullptr ? why : "unknown reason"));
-  }
-  using entry_point = void (*)(strategy_registrar&);
-  auto* enter = reinterpret_cast<entry_point>(::dlsym(library, ARGUS_STRATEGY_PLUGIN_NAME));
-  if (enter == nullptr) {
-    ::dlclose(library);
-    refuse(scenario, fmt::format("the strategy plug-in '{}' lacks the entry point {} (define it "
-                                 "with ARGUS_STRATEGY_PLUGIN from controller/strategy_plugin.hpp; "
-                                 "a plug-in built for another version of Argus has another)",
-                                 path, ARGUS_STRATEGY_PLUGIN_NAME));
-  }
-  collecting_registrar registrar;
-  enter(registrar);
-  if (registrar.entries.empty())
-    refuse(scenario, fmt::format("the strategy plug-in '{}' registers no strategy", path));
-  std::vector<std::string> names;
-  std::lock_guard<std::mutex> guard(r.mutex);
-  for (auto& e : registrar.entries) {
-    names.push_back(e.name);
-    r.add(std::move(e));
-  }
-  r.plugins.emplace(path, names);
-  return names;
+[[noreturn]] void fail(std::string message) {
+  throw std::runtime_error(std::move(message));
 }
 
 // `plugin:PATH` or `plugin:PATH#NAME`, split.
@@ -117,6 +85,56 @@ std::string names_of(const std::vector<std::string>& names) {
 }
 
 }  // namespace
+
+std::vector<std::string> load_strategy_plugin(const std::string& path) {
+  auto& r = the_registry();
+  {
+    std::lock_guard<std::mutex> guard(r.mutex);
+    if (auto it = r.plugins.find(path); it != r.plugins.end()) return it->second;
+  }
+  void* library = ::dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+  if (library == nullptr) {
+    const char* why = ::dlerror();
+    fail(fmt::format("the strategy plug-in '{}' does not load: {}", path,
+                     why != nullptr ? why : "unknown reason"));
+  }
+  using entry_point = void (*)(strategy_registrar&);
+  auto* enter = reinterpret_cast<entry_point>(::dlsym(library, ARGUS_STRATEGY_PLUGIN_NAME));
+  if (enter == nullptr) {
+    ::dlclose(library);
+    fail(
+        fmt::format("the strategy plug-in '{}' lacks the entry point {} (define it with "
+                    "ARGUS_STRATEGY_PLUGIN from controller/strategy_plugin.hpp; a plug-in built "
+                    "for another version of Argus has another)",
+                    path, ARGUS_STRATEGY_PLUGIN_NAME));
+  }
+  collecting_registrar registrar;
+  enter(registrar);
+  if (registrar.entries.empty())
+    fail(fmt::format("the strategy plug-in '{}' registers no strategy", path));
+  std::vector<std::string> names;
+  std::lock_guard<std::mutex> guard(r.mutex);
+  for (auto& e : registrar.entries) {
+    names.push_back(e.name);
+    e.source = path;
+    r.add(std::move(e));
+  }
+  r.plugins.emplace(path, names);
+  return names;
+}
+
+void load_listed_plugins() {
+  const char* listed = std::getenv("ARGUS_STRATEGY_PLUGINS");
+  if (listed == nullptr) return;
+  std::string_view paths(listed);
+  while (!paths.empty()) {
+    const auto colon = paths.find(':');
+    const auto path = paths.substr(0, colon);
+    if (!path.empty()) load_strategy_plugin(std::string(path));
+    if (colon == std::string_view::npos) break;
+    paths.remove_prefix(colon + 1);
+  }
+}
 
 void register_strategy(strategy_entry entry) {
   auto& r = the_registry();
@@ -145,24 +163,23 @@ std::string strategy_name(const config::scenario& scenario) {
 }
 
 void resolve_strategy(const config::scenario& scenario) {
-  if (const char* listed = std::getenv("ARGUS_STRATEGY_PLUGINS")) {
-    std::string_view paths(listed);
-    while (!paths.empty()) {
-      const auto colon = paths.find(':');
-      const auto path = paths.substr(0, colon);
-      if (!path.empty()) load_plugin(scenario, std::string(path));
-      if (colon == std::string_view::npos) break;
-      paths.remove_prefix(colon + 1);
-    }
+  try {
+    load_listed_plugins();
+  } catch (const std::runtime_error& e) {
+    refuse(scenario, fmt::format("ARGUS_STRATEGY_PLUGINS: {}", e.what()));
   }
   const auto& value = scenario.controller.strategy;
   if (value.starts_with("python:"))
-    refuse(scenario, fmt::format("'{}': Python strategies run through the argus Python module "
-                                 "(argus.run), not the argus command",
-                                 value));
+    refuse(scenario,
+           fmt::format("'{}': strategies written in Python are not supported yet", value));
   if (value.starts_with("plugin:")) {
     auto [path, name] = plugin_path_and_name(value);
-    const auto names = load_plugin(scenario, path);
+    std::vector<std::string> names;
+    try {
+      names = load_strategy_plugin(path);
+    } catch (const std::runtime_error& e) {
+      refuse(scenario, e.what());
+    }
     if (name.empty() && names.size() > 1)
       refuse(scenario, fmt::format("the strategy plug-in '{}' registers {} strategies ({}): name "
                                    "one as plugin:{}#NAME",

@@ -35,6 +35,8 @@ struct strategy_entry {
   bool oracle = false;
   /// One line for `argus strategies` and error messages.
   std::string summary;
+  /// Where it comes from: "built-in", or the plug-in's path (set by the registry).
+  std::string source = "built-in";
 };
 
 /// Adds (or replaces) a strategy under its name. Built-ins are registered at start-up.
@@ -42,6 +44,15 @@ void register_strategy(strategy_entry entry);
 
 /// The registered strategies, by name.
 std::vector<strategy_entry> registered_strategies();
+
+/// Loads the strategy plug-in at `path` (once; again returns the same), registering what it
+/// registers; returns those names. Throws std::runtime_error naming the library when it does not
+/// load, lacks the entry point or registers nothing.
+std::vector<std::string> load_strategy_plugin(const std::string& path);
+
+/// Loads the plug-ins the environment variable ARGUS_STRATEGY_PLUGINS lists (paths separated
+/// by ':'); throws as load_strategy_plugin does.
+void load_listed_plugins();
 
 /// The registered name `controller.strategy` stands for: the name itself, or the strategy a
 /// plug-in loaded for `plugin:PATH` registered (`plugin:PATH#NAME` for one of several).
