@@ -138,7 +138,7 @@ void finish_turn(node_actor* self, const cv::Mat& image) {
     frame = sensing::sensed_frame{ctx.tick(), view_of(st), image, std::move(st.snap),
                                   st.world->station};
   if (frame && !st.looks.empty()) st.input.looks = st.sensor->look(*frame, st.looks);
-  take_picks(st, frame ? &*frame : nullptr);
+  if (st.operator_desk->wants_frame()) take_picks(st, frame ? &*frame : nullptr);
   st.input.pose = st.head->state();
   st.input.sensed = frame.has_value();
   st.input.acquired = std::move(st.acquired);

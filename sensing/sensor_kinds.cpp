@@ -7,14 +7,6 @@
 
 namespace argus::sensing {
 
-candidate_filter both(candidate_filter first, candidate_filter second) {
-  if (!first) return second;
-  if (!second) return first;
-  return [first = std::move(first), second = std::move(second)](const candidate& c) {
-    return first(c) && second(c);
-  };
-}
-
 std::vector<controller::look_result> pixel_sensing::look(
     const sensed_frame& frame, const std::vector<controller::look_request>& looks,
     const candidate_filter& admit) {
@@ -48,7 +40,7 @@ protocol::signature emulated_sensing::acquire(controller::task_id task, const se
   int best = 0;
   double best_overlap = 0.0;
   for (const auto& v : vision::visible_pedestrians(*frame.truth, *frame.station, frame.view)) {
-    const auto shown = operator_box(*frame.truth, *frame.station, frame.view, v.id);
+    const auto shown = operator_box(v, frame.view);
     if (!shown) continue;
     const double overlap = (*shown & box).area() / (*shown | box).area();
     if (overlap > best_overlap) {
