@@ -9,7 +9,9 @@
 #include "actors/render_pool.hpp"
 #include "actors/tick_context.hpp"
 #include "actors/type_ids.hpp"
+#include "controller/strategy_registry.hpp"
 #include "fmt/format.h"
+#include "nlohmann/json.hpp"
 #include "protocol/link_model.hpp"
 #include "sensing/sensor_kinds.hpp"
 #include "vision/imaging_model.hpp"
@@ -35,6 +37,8 @@ struct camera_node_state {
 
   // The camera: its strategy (node knowledge only), its head, its sensor, its operator.
   std::unique_ptr<controller::strategy> strategy;
+  std::string strategy_name;
+  bool strategy_failed = false;  // it raised: the run ends after this tick
   std::optional<vision::ptz_camera> head;
   std::unique_ptr<sensing::sensor> sensor;  // null without a world
   std::optional<camera_operator> operator_desk;
@@ -103,6 +107,24 @@ caf::behavior& behaviour_for(camera_node_state& st) {
   return st.idle;
 }
 
+// A strategy that raises ends the run after this tick (outputs complete up to it): the node
+// does nothing it asked, logs why and tells the clock, naming the strategy, camera and tick.
+template <class Call>
+auto guarded(camera_node_state& st, tick_context& ctx, Call call) -> decltype(call()) {
+  if (st.strategy_failed) return {};
+  try {
+    return call();
+  } catch (const std::exception& e) {
+    st.strategy_failed = true;
+    const auto why = fmt::format("strategy '{}' raised at camera {}, tick {}: {}", st.strategy_name,
+                                 st.camera_id, ctx.tick(), e.what());
+    ctx.emit("strategy_failed", fmt::format(R"("camera":{},"error":{})", st.camera_id,
+                                            nlohmann::json(e.what()).dump()));
+    ctx.stop_run(why);
+    return {};
+  }
+}
+
 // The operator's picks due in this frame become the strategy's queries.
 void take_picks(camera_node_state& st, const sensing::sensed_frame* frame) {
   auto& ctx = *st.ctx;
@@ -141,9 +163,10 @@ void finish_turn(node_actor* self, const cv::Mat& image) {
   if (st.operator_desk->wants_frame()) take_picks(st, frame ? &*frame : nullptr);
   st.input.pose = st.head->state();
   st.input.sensed = frame.has_value();
+  st.input.image = image;
   st.input.acquired = std::move(st.acquired);
   st.acquired.clear();
-  auto out = st.strategy->step(st.input);
+  auto out = guarded(st, ctx, [&] { return st.strategy->step(st.input); });
   for (auto& m : out.messages)
     st.network->send(m.destination, std::string(protocol::kind_of(m.message)),
                      protocol::encode(m.message));
@@ -183,7 +206,7 @@ void take_turn(node_actor* self, std::int64_t tick, std::uint8_t p, const caf::a
     st.world->observer->traffic(st.camera_id, 0, received);
   if (st.world && st.world->operators) st.operator_desk->take_orders(*st.world->operators);
   st.input.cancels = st.operator_desk->take_due(tick, st.first_turn);
-  auto plan = st.strategy->plan(tick, !st.looks.empty());
+  auto plan = guarded(st, ctx, [&] { return st.strategy->plan(tick, !st.looks.empty()); });
   for (auto& e : plan.events) ctx.emit(std::move(e.kind), std::move(e.fields_json));
   // Only a node whose strategy or operator wants a frame takes one.
   const bool sense = st.world && (st.operator_desk->wants_frame() || plan.wants_frame);
@@ -242,6 +265,7 @@ void equip(camera_node_state& st, const config::scenario& scenario,
     if (st.world->oracle_for) oracle = st.world->oracle_for(camera);
     st.imaging = sensing::imaging_for(scenario, camera);
   }
+  st.strategy_name = controller::strategy_name(scenario);
   st.strategy = controller::make_strategy(identity, scenario, oracle);
   if (st.world && st.world->wrap_strategy)
     st.strategy = st.world->wrap_strategy(camera, std::move(st.strategy));

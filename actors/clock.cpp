@@ -210,6 +210,7 @@ class clock_actor : public caf::event_based_actor {
       return;
     }
     for (auto& ev : ack.events) batch_.push_back(std::move(ev));
+    if (!ack.stop_run.empty() && stop_reason_.empty()) stop_reason_ = std::move(ack.stop_run);
     if (ack.next_wakeup != no_wakeup)
       book(it->second, ack.participant, std::max(ack.next_wakeup, tick_ + 1));
     for (auto id : ack.woken) wake_for_mail(id);
@@ -306,7 +307,7 @@ class clock_actor : public caf::event_based_actor {
     }
     ++tick_;
     report_progress(false);
-    if (tick_ >= settings_.end_tick) {
+    if (tick_ >= settings_.end_tick || !stop_reason_.empty()) {
       finish();
       return;
     }
@@ -397,6 +398,7 @@ class clock_actor : public caf::event_based_actor {
     // Wall time is taken when the links have reported (close_recorder): the end-of-run flush
     // is work the run did.
     result_.unexpected_down = unexpected_down_;
+    result_.failure = stop_reason_;
     // Senders hand over what they still hold before the links count what is in flight.
     if (flushes_.begin(participants_that(&participant_info::flushes_at_end)))
       ask_for_flushes();
@@ -477,6 +479,8 @@ class clock_actor : public caf::event_based_actor {
   caf::actor recorder_;
   caf::actor progress_;
   caf::response_promise promise_;
+  // A participant's reason to end the run early (tick_ack::stop_run).
+  std::string stop_reason_;
   bool started_ = false;
   bool finished_ = false;
 

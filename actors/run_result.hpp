@@ -22,12 +22,15 @@ struct run_result {
   std::map<std::string, std::uint64_t> events_by_kind;
   /// Message fates per link ("link/1-2") and kind, from the links' end-of-run reports.
   std::map<std::string, protocol::accounting_by_kind> links;
+  /// Why the run ended before its end tick (a participant asked to stop: a strategy that
+  /// raised); empty when it ran to its end.
+  std::string failure;
 };
 
 template <class Inspector>
 typename Inspector::result_type inspect(Inspector& f, run_result& x) {
   return f(x.ticks, x.virtual_seconds, x.wall_seconds, x.participants, x.unexpected_down,
-           x.events_total, x.events_by_kind, x.links);
+           x.events_total, x.events_by_kind, x.links, x.failure);
 }
 
 }  // namespace argus::actors

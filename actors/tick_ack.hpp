@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "actors/sim_event.hpp"
@@ -27,13 +28,16 @@ struct tick_ack {
   std::vector<std::uint64_t> woken;
   std::vector<std::uint64_t> relayed;  // one entry per announced hand-over
   std::vector<sim_event> events;
+  /// Set when the participant cannot go on (a strategy that raised): the run ends after this
+  /// tick, its outputs complete up to it, and fails with this reason.
+  std::string stop_run;
 
   friend bool operator==(const tick_ack&, const tick_ack&) = default;
 };
 
 template <class Inspector>
 typename Inspector::result_type inspect(Inspector& f, tick_ack& x) {
-  return f(x.participant, x.tick, x.next_wakeup, x.woken, x.relayed, x.events);
+  return f(x.participant, x.tick, x.next_wakeup, x.woken, x.relayed, x.events, x.stop_run);
 }
 
 }  // namespace argus::actors

@@ -50,6 +50,11 @@ class tick_context {
     if (ack_.next_wakeup == no_wakeup || tick < ack_.next_wakeup) ack_.next_wakeup = tick;
   }
 
+  /// Ends the run after this tick, failing with `reason` (the first such reason wins).
+  void stop_run(std::string reason) {
+    if (ack_.stop_run.empty()) ack_.stop_run = std::move(reason);
+  }
+
   /// The acknowledgement to send to the clock.
   tick_ack finish() && { return std::move(ack_); }
 

@@ -3,6 +3,9 @@
 
 #include "CLI/CLI.hpp"
 #include "apps/commands.hpp"
+#ifdef ARGUS_WITH_PYTHON
+#include "python/embed.hpp"
+#endif
 
 namespace {
 
@@ -39,6 +42,9 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("argus ") + ARGUS_VERSION);
   app.require_subcommand(1);
   int result = argus::apps::ok;
+#ifdef ARGUS_WITH_PYTHON
+  argus::pybridge::enable_embedded_python();
+#endif
   argus::apps::add_run_command(app, result);
   argus::apps::add_serve_command(app, result);
   argus::apps::add_validate_command(app, result);

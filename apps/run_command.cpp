@@ -148,6 +148,11 @@ void add_run_command(CLI::App& app, int& result) {
       const auto report = record_run(scenario, outcome.output_dir, !args->no_feeds);
       print_outcome(*args, scenario, outcome, report);
       result = ok;
+      // A strategy that raised ended the run early: its outputs are complete up to that tick.
+      if (!outcome.result.failure.empty()) {
+        std::cerr << "argus run: " << outcome.result.failure << '\n';
+        result = run_failed;
+      }
     } catch (const config::scenario_error& e) {
       // A bad layout (or a flow naming no portal) is bad input, as in validate, plan and feeds.
       std::cerr << e.what() << '\n';

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "opencv2/core/mat.hpp"
 #include "opencv2/core/types.hpp"
 #include "protocol/group_messages.hpp"
 #include "protocol/net_message.hpp"
@@ -64,6 +65,9 @@ struct controller_input {
   std::int64_t tick = 0;
   /// The camera's pose in this frame.
   vision::ptz_state pose;
+  /// The frame the node sensed, as its sensor saw it (degraded): empty when it took none or
+  /// senses without pixels (emulated). For strategies that do their own vision.
+  cv::Mat image;
   /// Whether the node took a frame this tick (it does when the strategy asked to look for
   /// someone or wanted a frame; an idle node takes none). A frame whose rendering failed counts:
   /// its looks then find nothing.

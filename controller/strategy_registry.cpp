@@ -30,6 +30,8 @@ struct registry {
   // The plug-ins loaded, by path, with the names each registered (never unloaded: their
   // strategies' code stays in use until the process ends).
   std::map<std::string, std::vector<std::string>, std::less<>> plugins;
+  // Sources of named strategies, by prefix (python:).
+  std::map<std::string, strategy_source, std::less<>> sources;
 
   registry() {
     add({"paper", camera_controller_with(true), false,
@@ -136,6 +138,44 @@ void load_listed_plugins() {
   }
 }
 
+void register_strategy_source(std::string prefix, strategy_source source) {
+  auto& r = the_registry();
+  std::lock_guard<std::mutex> guard(r.mutex);
+  r.sources.insert_or_assign(std::move(prefix), std::move(source));
+}
+
+namespace {
+
+// A value one of the sources serves: its entry, made once.
+void resolve_from_source(const config::scenario& scenario) {
+  const auto& value = scenario.controller.strategy;
+  strategy_source source;
+  {
+    auto& r = the_registry();
+    std::lock_guard<std::mutex> guard(r.mutex);
+    if (r.entries.find(value) != r.entries.end()) return;
+    for (const auto& [prefix, s] : r.sources)
+      if (value.starts_with(prefix)) source = s;
+  }
+  if (!source) {
+    if (value.starts_with("python:"))
+      refuse(scenario, fmt::format("'{}': this argus was built without Python (ARGUS_PYTHON=OFF, "
+                                   "as in sanitizer builds)",
+                                   value));
+    return;
+  }
+  strategy_entry entry;
+  try {
+    entry = source(value);
+  } catch (const std::runtime_error& e) {
+    refuse(scenario, e.what());
+  }
+  entry.name = value;
+  register_strategy(std::move(entry));
+}
+
+}  // namespace
+
 void register_strategy(strategy_entry entry) {
   auto& r = the_registry();
   std::lock_guard<std::mutex> guard(r.mutex);
@@ -169,9 +209,7 @@ void resolve_strategy(const config::scenario& scenario) {
     refuse(scenario, fmt::format("ARGUS_STRATEGY_PLUGINS: {}", e.what()));
   }
   const auto& value = scenario.controller.strategy;
-  if (value.starts_with("python:"))
-    refuse(scenario,
-           fmt::format("'{}': strategies written in Python are not supported yet", value));
+  resolve_from_source(scenario);
   if (value.starts_with("plugin:")) {
     auto [path, name] = plugin_path_and_name(value);
     std::vector<std::string> names;

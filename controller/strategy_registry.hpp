@@ -42,6 +42,14 @@ struct strategy_entry {
 /// Adds (or replaces) a strategy under its name. Built-ins are registered at start-up.
 void register_strategy(strategy_entry entry);
 
+/// Makes the entry of a strategy named by a `controller.strategy` value with a source's prefix
+/// (`python:MODULE:CLASS`); throws std::runtime_error saying what is wrong.
+using strategy_source = std::function<strategy_entry(const std::string& value)>;
+
+/// Serves `controller.strategy` values starting with `prefix` ("python:"): resolve_strategy
+/// asks `source` once per value not registered yet and registers what it returns under it.
+void register_strategy_source(std::string prefix, strategy_source source);
+
 /// The registered strategies, by name.
 std::vector<strategy_entry> registered_strategies();
 

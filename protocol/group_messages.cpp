@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <stdexcept>
 #include <tuple>
 #include <type_traits>
 
@@ -63,6 +64,11 @@ class writer {
   void put(const camera_relevance& c) {
     put(c.camera);
     put(c.relevance);
+  }
+  // Longer strings are refused by encode: a note is never cut short.
+  void put(const std::string& bytes) {
+    put(static_cast<std::uint16_t>(bytes.size()));
+    out_.append(bytes);
   }
   template <class T>
   void put_any(const T& x) {
@@ -144,6 +150,13 @@ class reader {
            t.min_cameras <= t.max_cameras;
   }
   bool get(camera_relevance& c) { return get(c.camera) && get(c.relevance); }
+  bool get(std::string& bytes) {
+    std::uint16_t n = 0;
+    if (!get(n) || in_.size() - at_ < n) return false;
+    bytes.assign(in_.data() + at_, n);
+    at_ += n;
+    return true;
+  }
   template <class T>
   bool get_any(T& x) {
     return get(x);
@@ -199,6 +212,9 @@ auto fields(csp_result& m) {
 }
 auto fields(task_cancel& m) {
   return std::tie(m.task, m.sender);
+}
+auto fields(note& m) {
+  return std::tie(m.task, m.sender, m.topic, m.body);
 }
 
 bool is_relevance(double r) {
@@ -269,6 +285,7 @@ std::string_view kind_of(const group_message& m) {
     std::string_view operator()(const csp_data&) const { return "cspdata"; }
     std::string_view operator()(const csp_result&) const { return "cspresult"; }
     std::string_view operator()(const task_cancel&) const { return "cancel"; }
+    std::string_view operator()(const note&) const { return "note"; }
   };
   return std::visit(namer{}, m);
 }
@@ -285,6 +302,7 @@ task_id task_of(const group_message& m) {
     task_id operator()(const csp_data& x) const { return x.task; }
     task_id operator()(const csp_result& x) const { return x.task; }
     task_id operator()(const task_cancel& x) const { return x.task; }
+    task_id operator()(const note& x) const { return x.task; }
   };
   return std::visit(finder{}, m);
 }
@@ -292,12 +310,15 @@ task_id task_of(const group_message& m) {
 bool is_group_kind(std::string_view kind) {
   for (std::string_view k :
        {"queryrelevance", "relevance", "join", "status", "handover", "demote", "demoteack",
-        "demotenack", "demoteretry", "cspquery", "cspdata", "cspresult", "cancel"})
+        "demotenack", "demoteretry", "cspquery", "cspdata", "cspresult", "cancel", "note"})
     if (kind == k) return true;
   return false;
 }
 
 std::string encode(const group_message& m) {
+  if (const auto* n = std::get_if<note>(&m);
+      n != nullptr && (n->topic.size() > max_count || n->body.size() > max_count))
+    throw std::length_error("a note's topic and body are at most 65,535 bytes each");
   writer w;
   std::visit([&w](const auto& x) { write(w, x); }, m);
   return std::move(w).take();
@@ -313,6 +334,7 @@ std::optional<group_message> decode(std::string_view kind, std::string_view body
   if (kind == "cspdata") return read_whole<csp_data>(body);
   if (kind == "cspresult") return read_whole<csp_result>(body);
   if (kind == "cancel") return read_whole<task_cancel>(body);
+  if (kind == "note") return read_whole<note>(body);
   for (auto step :
        {demotion_step::demote, demotion_step::ack, demotion_step::nack, demotion_step::retry}) {
     if (kind != demotion_kind(step)) continue;

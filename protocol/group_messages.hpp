@@ -167,13 +167,24 @@ struct task_cancel {
   friend bool operator==(const task_cancel&, const task_cancel&) = default;
 };
 
+/// A strategy's own message (not the paper's): a topic and opaque bytes, for strategies written
+/// outside this protocol (docs/strategies.md) to talk to each other. The paper's controller
+/// ignores it. At most 65,535 bytes of topic and of body each.
+struct note {
+  task_id task = 0;
+  int sender = 0;
+  std::string topic;
+  std::string body;
+  friend bool operator==(const note&, const note&) = default;
+};
+
 /// Any message of the protocol.
 using group_message = std::variant<query_relevance, relevance_bid, join, status, handover, demotion,
-                                   csp_query, csp_data, csp_result, task_cancel>;
+                                   csp_query, csp_data, csp_result, task_cancel, note>;
 
 /// The kind a message travels as: the paper's names ("queryrelevance", "relevance", "join",
 /// "status", "demote", "demoteack", "demotenack", "demoteretry"), and ours for what it leaves
-/// unnamed ("handover", "cspquery", "cspdata", "cspresult", "cancel").
+/// unnamed ("handover", "cspquery", "cspdata", "cspresult", "cancel", "note").
 std::string_view kind_of(const group_message& m);
 
 /// The task a message is about (a conflict query: the solver's task).

@@ -14,6 +14,7 @@ argus_packages=(
   chromium  # the report test loads report.html in headless Chromium
   libcpp-httplib-dev  # argus serve's HTTP server (Server-Sent Events for the live stream)
   chromium-driver python3-selenium  # the live console's end-to-end test drives the page
+  pybind11-dev python3-pybind11 python3-dev python3-numpy  # the Python module argus
 )
 
 argus_install_missing() {

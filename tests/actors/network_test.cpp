@@ -233,8 +233,8 @@ CAF_TEST(what a camera sent before it crashed still reaches its neighbours) {
   s.faults = {crash};
   // Sent at tick 60, the first of a lookahead window (60 to 62): still in camera 2's outbox
   // when it crashes at 61, and on the wire all the same.
-  run_network(s, 100, {{60, {2, protocol::broadcast, "note", false}}});
-  CAF_CHECK_EQUAL(receivers(2, "note"), (std::set<int>{1, 3, 4, 5}));
+  run_network(s, 100, {{60, {2, protocol::broadcast, "memo", false}}});
+  CAF_CHECK_EQUAL(receivers(2, "memo"), (std::set<int>{1, 3, 4, 5}));
 }
 
 CAF_TEST(neighbours are given up after a crash and found again after recovery) {

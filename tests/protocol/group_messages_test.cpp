@@ -43,7 +43,8 @@ std::vector<group_message> one_of_each() {
           csp_data{3, 1, 2, 1, 2, {{4, 0.5}, {5, 0.25}}, {4}},
           csp_result{3, 1, {4, 5}, 1},
           task_cancel{3, 1},
-          query_relevance{a_task_with_halves(), 1, 4, false}};
+          query_relevance{a_task_with_halves(), 1, 4, false},
+          note{3, 1, "hello", std::string("\0\x01bytes", 7)}};
 }
 
 TEST(group_messages, every_kind_survives_its_encoding) {
@@ -85,6 +86,13 @@ TEST(group_messages, truncated_or_padded_bytes_are_refused) {
       EXPECT_FALSE(decode(kind_of(m), bytes.substr(0, n))) << kind_of(m) << " cut at " << n;
     EXPECT_FALSE(decode(kind_of(m), bytes + "x")) << kind_of(m);
   }
+}
+
+TEST(group_messages, a_note_longer_than_its_count_is_refused_not_cut) {
+  EXPECT_EQ(kind_of(note{}), "note");
+  EXPECT_THROW(encode(note{1, 2, "t", std::string(70000, 'x')}), std::length_error);
+  const auto full = note{1, 2, "t", std::string(65535, 'x')};
+  EXPECT_EQ(decode("note", encode(full)), group_message{full});
 }
 
 TEST(group_messages, out_of_range_values_are_refused) {

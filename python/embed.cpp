@@ -1,0 +1,39 @@
+#include "python/embed.hpp"
+
+#include <mutex>
+
+#include "pybind11/embed.h"
+#include "python/bindings.hpp"
+#include "python/python_strategy.hpp"
+
+// In the executable, `_argus` is a built-in module: argus/__init__.py imports it rather than
+// loading the extension, a second copy of the simulator.
+PYBIND11_EMBEDDED_MODULE(_argus, m) {
+  argus::pybridge::bind_all(m);
+}
+
+namespace argus::pybridge {
+namespace {
+
+void start_interpreter() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    py::initialize_interpreter();
+    {
+      auto path = py::module_::import("sys").attr("path");
+      // The package in the build tree, unless PYTHONPATH offers one (an installed copy).
+      path.attr("append")(ARGUS_PYTHON_DIR);
+    }
+    // Camera nodes step their strategies on the scheduler's threads: they take the GIL in
+    // turn. The interpreter lives until the process ends.
+    PyEval_SaveThread();
+  });
+}
+
+}  // namespace
+
+void enable_embedded_python() {
+  serve_python_strategies(start_interpreter);
+}
+
+}  // namespace argus::pybridge
