@@ -1,6 +1,8 @@
 #include "python/embed.hpp"
 
+#include <filesystem>
 #include <mutex>
+#include <string>
 
 #include "pybind11/embed.h"
 #include "python/bindings.hpp"
@@ -20,9 +22,15 @@ void start_interpreter() {
   std::call_once(once, [] {
     py::initialize_interpreter();
     {
+      // The package of an installed argus (PREFIX/bin/argus, PREFIX/lib/argus/python), else the
+      // build tree's; after PYTHONPATH's.
       auto path = py::module_::import("sys").attr("path");
-      // The package in the build tree, unless PYTHONPATH offers one (an installed copy).
-      path.attr("append")(ARGUS_PYTHON_DIR);
+      std::error_code ec;
+      const auto exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+      const auto installed = exe.parent_path().parent_path() / ARGUS_PYTHON_INSTALL_DIR;
+      const bool is_installed =
+          !ec && std::filesystem::exists(installed / "argus" / "__init__.py", ec);
+      path.attr("append")(is_installed ? installed.string() : std::string(ARGUS_PYTHON_DIR));
     }
     // Camera nodes step their strategies on the scheduler's threads: they take the GIL in
     // turn. The interpreter lives until the process ends.

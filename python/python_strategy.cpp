@@ -1,12 +1,40 @@
 #include "python/python_strategy.hpp"
 
 #include <filesystem>
+#include <mutex>
 #include <stdexcept>
 
 #include "fmt/format.h"
 
 namespace argus::pybridge {
 namespace {
+
+// Camera nodes step their Python strategies from several scheduler threads. Handing the GIL
+// itself from thread to thread forces a switch each time (the waiter signals, the holder waits
+// until it has taken over): the run spent more time in the kernel than in Python. The nodes
+// queue on this mutex instead and find the GIL free.
+std::mutex& python_turn() {
+  static std::mutex m;
+  return m;
+}
+
+// A scheduler thread's Python thread state, made once and kept: taking the GIL on a thread
+// without one makes a state and frees it again on release, a memory map and unmap per step.
+bool keep_thread_state() {
+  thread_local bool kept = false;
+  if (kept) return true;
+  kept = true;
+  PyGILState_Ensure();  // this thread's state, with the GIL
+  PyEval_SaveThread();  // the GIL released, the state kept for every later call
+  return true;
+}
+
+// The GIL, taken after the turn, on the thread's own state.
+struct python_call {
+  std::lock_guard<std::mutex> turn{python_turn()};
+  bool kept = keep_thread_state();
+  py::gil_scoped_acquire gil;
+};
 
 // The Python exception as one line (and its traceback's last frame, where it has one).
 std::string describe(py::error_already_set& e) {
@@ -53,7 +81,7 @@ class python_strategy final : public controller::strategy {
   }
 
   ~python_strategy() override {
-    py::gil_scoped_acquire gil;
+    python_call call;
     plan_ = py::object();
     step_ = py::object();
     status_fn_ = py::object();
@@ -62,7 +90,7 @@ class python_strategy final : public controller::strategy {
 
   controller::frame_plan plan(std::int64_t tick, bool looking) override {
     if (!plan_) return strategy::plan(tick, looking);
-    py::gil_scoped_acquire gil;
+    python_call call;
     try {
       py::object r = plan_(tick, looking);
       controller::frame_plan p;
@@ -77,7 +105,7 @@ class python_strategy final : public controller::strategy {
   }
 
   controller::controller_output step(const controller::controller_input& in) override {
-    py::gil_scoped_acquire gil;
+    python_call call;
     try {
       py::object r = step_(py::cast(in, py::return_value_policy::copy));
       controller::controller_output out;

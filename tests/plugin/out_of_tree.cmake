@@ -21,3 +21,12 @@ execute_process(
 if(NOT code EQUAL 0)
   message(FATAL_ERROR "the installed argus did not run the out-of-tree plug-in")
 endif()
+# With Python (ARGUS_PYTHON): the installed argus runs a strategy written in Python from the
+# package installed beside it.
+file(GLOB installed_python "${WORK}/prefix/lib*/argus/python/argus/__init__.py")
+if(installed_python)
+  step("${CMAKE_COMMAND}" -E env "PYTHONPATH=${SOURCE}/examples/strategies"
+       "${WORK}/prefix/bin/argus" run "${SOURCE}/scenarios/penn_station_emulated.yaml"
+       --out "${WORK}/run_python" --no-feeds --duration 20s
+       --set controller.strategy=python:lone_tracker:LoneTracker)
+endif()
