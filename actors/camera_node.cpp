@@ -11,7 +11,6 @@
 #include "actors/type_ids.hpp"
 #include "controller/strategy_registry.hpp"
 #include "fmt/format.h"
-#include "nlohmann/json.hpp"
 #include "protocol/link_model.hpp"
 #include "sensing/sensor_kinds.hpp"
 #include "vision/imaging_model.hpp"
@@ -118,8 +117,7 @@ auto guarded(camera_node_state& st, tick_context& ctx, Call call) -> decltype(ca
     st.strategy_failed = true;
     const auto why = fmt::format("strategy '{}' raised at camera {}, tick {}: {}", st.strategy_name,
                                  st.camera_id, ctx.tick(), e.what());
-    ctx.emit("strategy_failed", fmt::format(R"("camera":{},"error":{})", st.camera_id,
-                                            nlohmann::json(e.what()).dump()));
+    ctx.emit(events::strategy_failed{.camera = st.camera_id, .error = {e.what()}});
     ctx.stop_run(why);
     return {};
   }
@@ -133,10 +131,7 @@ void take_picks(camera_node_state& st, const sensing::sensed_frame* frame) {
     picked = [&st](const task_pick& p) { st.world->observer->picked(p); };
   st.input.queries = st.operator_desk->resolve(
       frame, st.sensor.get(), st.strategy->takes_operator_signatures(),
-      [&ctx](std::string kind, std::string fields) {
-        ctx.emit(std::move(kind), std::move(fields));
-      },
-      picked);
+      [&ctx](const events::event& e) { ctx.emit(e); }, picked);
 }
 
 // What the strategy asked the sensor to take from this frame: her signature, looked for from
@@ -196,8 +191,7 @@ void take_turn(node_actor* self, std::int64_t tick, std::uint8_t p, const caf::a
   if (!st.up_logged) {
     st.up_logged = true;
     st.first_turn = tick;
-    ctx.emit("node_up",
-             fmt::format(R"("camera":{},"type":"{}")", st.camera_id, st.ptz ? "ptz" : "static"));
+    ctx.emit(events::node_up{.camera = st.camera_id, .type = st.ptz ? "ptz" : "static"});
   }
   st.input.tick = tick;
   const auto received = read_mail(*st.network, st.arrivals, st.to_originate, st.camera_id, tick, p,
@@ -229,8 +223,8 @@ void take_turn(node_actor* self, std::int64_t tick, std::uint8_t p, const caf::a
           },
           [self](caf::error& err) {
             auto& st = self->state;
-            st.ctx->emit("render_failed", fmt::format(R"("camera":{},"error_code":{})",
-                                                      st.camera_id, static_cast<int>(err.code())));
+            st.ctx->emit(events::render_failed{.camera = st.camera_id,
+                                               .error_code = static_cast<int>(err.code())});
             finish_turn(self, {});
           });
 }

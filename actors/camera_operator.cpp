@@ -107,12 +107,16 @@ void camera_operator::resolve_one(const due_task& q, const sensing::sensed_frame
   auto r = resolve_pick(q.request, frame, entered);
   if (r.refusal.empty() && !eye->can_acquire(*frame)) r.refusal = "no_frame";
   if (!r.refusal.empty()) {
-    emit("task_refused", fmt::format(R"("camera":{},"task":{},"pedestrian":{},"reason":"{}")",
-                                     camera_id_, q.task, r.pedestrian, r.refusal));
+    emit(events::task_refused{.camera = camera_id_,
+                              .task = q.task,
+                              .pedestrian = r.pedestrian,
+                              .reason = std::string(r.refusal)});
     return;
   }
-  emit("task_target", fmt::format(R"("camera":{},"task":{},"pedestrian":{},"by":"{}")", camera_id_,
-                                  q.task, r.pedestrian, config::yaml_name(q.request.by)));
+  emit(events::task_target{.camera = camera_id_,
+                           .task = q.task,
+                           .pedestrian = r.pedestrian,
+                           .by = std::string(config::yaml_name(q.request.by))});
   if (picked)
     picked({q.task, r.pedestrian, camera_id_, static_cast<std::int64_t>(frame->truth->tick()),
             q.request.by});

@@ -9,6 +9,7 @@
 #include "actors/operator_board.hpp"
 #include "config/scenario.hpp"
 #include "controller/controller_io.hpp"
+#include "events/event.hpp"
 #include "sensing/sensor.hpp"
 #include "sensing/task_targets.hpp"
 
@@ -45,7 +46,7 @@ class camera_operator {
 
   /// What resolving a pick reports: its event (kind, JSON members) and, once resolved, where it
   /// went.
-  using event_sink = std::function<void(std::string kind, std::string fields)>;
+  using event_sink = std::function<void(const events::event&)>;
   using pick_sink = std::function<void(const task_pick&)>;
 
   /// Resolves the due picks and the watches against `frame` (null: no frame this tick) into

@@ -10,6 +10,7 @@
 
 #include "actors/phase.hpp"
 #include "actors/type_ids.hpp"
+#include "events/event.hpp"
 #include "fmt/format.h"
 #include "spdlog/spdlog.h"
 
@@ -275,8 +276,9 @@ class clock_actor : public caf::event_based_actor {
     ev.source_id = id;
     ev.seq = 0xffffffffu;  // after anything the participant itself emitted this tick
     ev.source = name;
-    ev.kind = "participant_down";
-    ev.fields_json = "\"expected\":false";
+    const events::event down = events::participant_down{.expected = false};
+    ev.kind = std::string(events::kind_of(down));
+    ev.fields_json = events::fields_json(down);
     batch_.push_back(std::move(ev));
     drop(id, /*expected=*/false);
   }

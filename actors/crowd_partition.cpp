@@ -43,9 +43,9 @@ caf::behavior crowd_partition(caf::stateful_actor<crowd_partition_state>* self,
         // snapshot is always the one of this tick unless the coordinator is gone.
         if (!st.previous || st.previous->tick() != static_cast<std::uint64_t>(tick) ||
             !st.coordinator) {
-          ctx.emit("world_out_of_step",
-                   fmt::format(R"("partition":{},"snapshot_tick":{})", st.setup.index,
-                               st.previous ? static_cast<std::int64_t>(st.previous->tick()) : -1));
+          ctx.emit(events::world_out_of_step{
+              .partition = st.setup.index,
+              .snapshot_tick = st.previous ? static_cast<std::int64_t>(st.previous->tick()) : -1});
         } else {
           partition_report report;
           report.index = st.setup.index;

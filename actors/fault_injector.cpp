@@ -133,7 +133,7 @@ void perform(injector* self, tick_context& ctx, const planned& p) {
   const auto& f = st.scenario.faults[p.fault];
   if (p.recovery || f.kind == config::fault_kind::recover) {
     bool applied = recover(self, f.camera);
-    ctx.emit("node_recovered", fmt::format(R"("camera":{},"applied":{})", f.camera, applied));
+    ctx.emit(events::node_recovered{.camera = f.camera, .applied = applied});
     return;
   }
   bool applied = true;
@@ -161,9 +161,11 @@ void perform(injector* self, tick_context& ctx, const planned& p) {
     case config::fault_kind::recover:
       break;  // above
   }
-  auto peer = f.peer ? fmt::format(R"(,"peer":{})", *f.peer) : std::string{};
-  ctx.emit("fault", fmt::format(R"("fault":"{}","camera":{}{},"random":false,"applied":{})",
-                                config::yaml_name(f.kind), f.camera, peer, applied));
+  ctx.emit(events::fault_event{.fault = std::string(config::yaml_name(f.kind)),
+                               .camera = f.camera,
+                               .peer = f.peer,
+                               .random = false,
+                               .applied = applied});
 }
 
 void random_failures(injector* self, tick_context& ctx) {
@@ -174,8 +176,11 @@ void random_failures(injector* self, tick_context& ctx) {
     // One draw per camera per tick, alive or not, so one failure never shifts the others.
     bool fails = unit(st.rng) < st.failure_per_tick;
     if (fails && handle && crash(self, camera))
-      ctx.emit("fault",
-               fmt::format(R"("fault":"crash","camera":{},"random":true,"applied":true)", camera));
+      ctx.emit(events::fault_event{.fault = "crash",
+                                   .camera = camera,
+                                   .peer = std::nullopt,
+                                   .random = true,
+                                   .applied = true});
   }
 }
 

@@ -23,19 +23,23 @@ std::uint64_t read_mail(protocol::node_network& network, net_arrivals& arrivals,
       continue;
     }
     if (protocol::is_group_kind(m.kind.name())) {
-      ctx.emit("bad_message", fmt::format(R"("camera":{},"origin":{},"message":"{}","bytes":{})",
-                                          camera, m.origin, m.kind, m.body.size()));
+      ctx.emit(events::bad_message{.camera = camera,
+                                   .origin = m.origin,
+                                   .message = std::string(m.kind.name()),
+                                   .bytes = m.body.size()});
       continue;
     }
     if (m.kind == "ping") network.reply(m, "pong", {});
-    ctx.emit("net_received", fmt::format(R"("camera":{},"origin":{},"message":"{}","hops":{})",
-                                         camera, m.origin, m.kind, m.hops));
+    ctx.emit(events::net_received{.camera = camera,
+                                  .origin = m.origin,
+                                  .message = std::string(m.kind.name()),
+                                  .hops = m.hops});
   }
   for (auto& [stamp, o] : to_originate.take_due(tick, phase)) {
     auto id = o.expects_reply ? network.request(tick, o.destination, o.kind, std::move(o.body))
                               : network.send(o.destination, o.kind, std::move(o.body));
-    ctx.emit("net_sent", fmt::format(R"("camera":{},"destination":{},"message":"{}","id":{})",
-                                     camera, o.destination, o.kind, id));
+    ctx.emit(events::net_sent{
+        .camera = camera, .destination = o.destination, .message = o.kind, .id = id});
   }
   return received;
 }
@@ -55,11 +59,10 @@ std::uint64_t batch_outgoing(protocol::node_network& network, const link_directo
                ctx.tick(), std::move(batch));
   }
   for (const auto& change : network.take_changes())
-    ctx.emit(change.up ? "neighbour_up" : "neighbour_lost",
-             fmt::format(R"("camera":{},"neighbour":{})", camera, change.neighbour));
+    ctx.emit(
+        events::neighbour_change{.up = change.up, .camera = camera, .neighbour = change.neighbour});
   for (const auto& f : network.take_failures())
-    ctx.emit("peer_failed",
-             fmt::format(R"("camera":{},"peer":{},"request":"{}")", camera, f.peer, f.kind));
+    ctx.emit(events::peer_failed{.camera = camera, .peer = f.peer, .request = f.kind});
   return sent;
 }
 

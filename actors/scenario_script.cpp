@@ -7,6 +7,7 @@
 #include "actors/participant_ids.hpp"
 #include "actors/tick_context.hpp"
 #include "actors/type_ids.hpp"
+#include "config/enum_names.hpp"
 #include "config/ticks.hpp"
 #include "fmt/format.h"
 
@@ -29,18 +30,16 @@ struct script_state {
   std::shared_ptr<operator_board> operators;
 };
 
-std::string target_fields(const config::operator_task& t) {
-  switch (t.by) {
-    case config::task_target::pedestrian:
-      return fmt::format(R"("by":"pedestrian","pedestrian":{},"camera":{})", t.pedestrian,
-                         t.camera);
-    case config::task_target::pixel:
-      return fmt::format(R"("by":"pixel","pixel":[{},{}],"camera":{})", t.pixel.x_px, t.pixel.y_px,
-                         t.camera);
-    case config::task_target::first_to_enter:
-      return fmt::format(R"("by":"first_to_enter","camera":{})", t.camera);
-  }
-  return {};
+events::task_issued issued(std::uint32_t index, const config::operator_task& t) {
+  events::task_issued e{.task = index,
+                        .by = std::string(config::yaml_name(t.by)),
+                        .pedestrian = std::nullopt,
+                        .pixel = std::nullopt,
+                        .camera = t.camera,
+                        .cameras_wanted = t.cameras_wanted};
+  if (t.by == config::task_target::pedestrian) e.pedestrian = t.pedestrian;
+  if (t.by == config::task_target::pixel) e.pixel = std::vector<double>{t.pixel.x_px, t.pixel.y_px};
+  return e;
 }
 
 // The operator's commands that came in since the last turn become this tick's entries, as
@@ -108,12 +107,12 @@ caf::behavior scenario_script(caf::stateful_actor<script_state>* self, config::s
           const auto [at, index, cancel] = st.steps[st.next];
           const auto& t = st.scenario.tasks[index];
           if (cancel) {
-            ctx.emit("task_cancelled", fmt::format(R"("task":{},"camera":{})", index, t.camera));
+            ctx.emit(events::task_cancelled{.task = static_cast<std::uint32_t>(index),
+                                            .camera = t.camera});
             if (st.log) st.log->add_cancel(static_cast<std::uint32_t>(index), at);
             continue;
           }
-          ctx.emit("task_issued", fmt::format(R"("task":{},{},"cameras_wanted":{})", index,
-                                              target_fields(t), t.cameras_wanted));
+          ctx.emit(issued(static_cast<std::uint32_t>(index), t));
         }
         if (st.next < st.steps.size()) ctx.wake_at(std::get<0>(st.steps[st.next]));
         self->send(st.clock, std::move(ctx).finish());

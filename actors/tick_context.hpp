@@ -6,6 +6,7 @@
 
 #include "actors/phase.hpp"
 #include "actors/tick_ack.hpp"
+#include "events/event.hpp"
 
 namespace argus::actors {
 
@@ -34,6 +35,11 @@ class tick_context {
     ev.kind = std::move(kind);
     ev.fields_json = std::move(fields_json);
     ack_.events.push_back(std::move(ev));
+  }
+
+  /// Appends one of the log's own events (events/event.hpp).
+  void emit(const events::event& e) {
+    emit(std::string(events::kind_of(e)), events::fields_json(e));
   }
 
   /// Records that mail went to participant `id`, so the clock ticks it to read it (its next

@@ -118,9 +118,8 @@ void record_tick(caf::stateful_actor<video_recorder_state>* self,
               if (st.settings.imaging)
                 st.cameras[k].imaging = vision::imaging_model::for_camera(
                     st.cameras[k].imaging_settings, st.settings.run_seed, st.cameras[k].id);
-              st.ctx->emit("video_render_failed",
-                           fmt::format(R"("camera":{},"error_code":{})", st.cameras[k].id,
-                                       static_cast<int>(err.code())));
+              st.ctx->emit(events::video_render_failed{.camera = st.cameras[k].id,
+                                                       .error_code = static_cast<int>(err.code())});
               tile_done(self, k, {});
             });
   }
@@ -167,7 +166,7 @@ caf::behavior video_recorder(caf::stateful_actor<video_recorder_state>* self,
         std::shared_ptr<const world::snapshot> latest;
         for (auto& [stamp, frame] : st.snapshots.take_due(tick, p)) latest = std::move(frame);
         if (!latest) {
-          st.ctx->emit("video_out_of_step", fmt::format(R"("tick":{})", tick));
+          st.ctx->emit(events::video_out_of_step{.tick = tick});
           self->send(st.clock, std::move(*st.ctx).finish());
           st.ctx.reset();
           st.clock = nullptr;

@@ -96,16 +96,16 @@ void emit_events(tick_context& ctx, const world::snapshot& frame) {
   for (const auto& e : frame.events()) {
     switch (e.kind) {
       case world::event_kind::spawned:
-        ctx.emit("pedestrian_entered",
-                 fmt::format(R"("pedestrian":{},"at":{})", e.pedestrian, e.resource));
+        ctx.emit(events::pedestrian_moved{
+            .entered = true, .pedestrian = e.pedestrian, .at = e.resource});
         break;
       case world::event_kind::left:
-        ctx.emit("pedestrian_left",
-                 fmt::format(R"("pedestrian":{},"at":{})", e.pedestrian, e.resource));
+        ctx.emit(events::pedestrian_moved{
+            .entered = false, .pedestrian = e.pedestrian, .at = e.resource});
         break;
       case world::event_kind::goal_completed:
-        ctx.emit("goal_completed", fmt::format(R"("pedestrian":{},"goal":"{}")", e.pedestrian,
-                                               world::to_string(e.goal)));
+        ctx.emit(events::goal_completed{.pedestrian = e.pedestrian,
+                                        .goal = std::string(world::to_string(e.goal))});
         break;
       default:
         break;
@@ -127,8 +127,7 @@ void step_world(caf::stateful_actor<world_coordinator_state>* self, tick_context
     ++reported;
   }
   if (reported != count)
-    ctx.emit("world_partitions_missing",
-             fmt::format(R"("reported":{},"partitions":{})", reported, count));
+    ctx.emit(events::world_partitions_missing{.reported = reported, .partitions = count});
   const auto world_tick = st.current->tick() + 1;
   std::vector<world::event> spawn_events;
   auto states = world::gather_states(results);

@@ -21,7 +21,7 @@ include(ArgusStrategyPlugin)
 
 install(TARGETS argus RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(TARGETS argus_strategy_api EXPORT ArgusTargets)
-foreach(dir config controller protocol sensing vision world eval)
+foreach(dir config controller events protocol sensing vision world eval)
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/${dir}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/argus/${dir}
           FILES_MATCHING PATTERN "*.hpp")
 endforeach()

@@ -121,11 +121,13 @@ void camera_controller::send(int to, protocol::group_message m, controller_outpu
   out.messages.push_back(outgoing_message{to, std::move(m)});
 }
 
-void camera_controller::emit(controller_output& out, std::string_view kind,
-                             const std::string& fields) const {
-  auto json = fmt::format(R"("camera":{})", me_.id);
-  if (!fields.empty()) json += "," + fields;
-  out.events.push_back(controller_event{std::string(kind), std::move(json)});
+void camera_controller::emit(controller_output& out, events::event e) const {
+  std::visit(
+      [this](auto& x) {
+        if constexpr (requires { x.camera; }) x.camera = me_.id;
+      },
+      e);
+  out.events.push_back(logged(e));
 }
 
 frame_plan camera_controller::plan(std::int64_t, bool looking) {
@@ -149,8 +151,8 @@ controller_output camera_controller::step(const controller_input& in) {
   run_timers(out);
   plan_next(out);
   if (state() != reported_state_) {
-    emit(out, "node_state",
-         fmt::format(R"("from":"{}","to":"{}")", name_of(reported_state_), name_of(state())));
+    emit(out, events::node_state{.from = std::string(name_of(reported_state_)),
+                                 .to = std::string(name_of(state()))});
     reported_state_ = state();
   }
   return out;
@@ -167,7 +169,7 @@ void camera_controller::take_looks(const controller_input& in, controller_output
       if (r.model && settings_.share_model && role_ == group_role::leader) {
         // Her colours at the size this camera zoomed to: what its next queries carry.
         task_->target = *r.model;
-        emit(out, "signature_shared", fmt::format(R"("task":{})", task_->task));
+        emit(out, events::signature_shared{.task = task_->task});
       }
       if (r.found) {
         seen_relevance_ = relevance_of(r.box, false);
@@ -232,11 +234,13 @@ void camera_controller::weigh_evidence(pending_query& p, const look_result& r,
   send(p.querier, bid, out);
   p.bid_sent = true;
   p.bid_at = now_;
-  emit(out, "bid",
-       fmt::format(R"("task":{},"leader":{},"auction":{},"relevance":{:.4f},"busy":{},)"
-                   R"("found_fraction":{:.3f},"mean_score":{:.4f})",
-                   bid.task, bid.leader, bid.auction, bid.relevance, bid.busy, found_fraction,
-                   mean_score));
+  emit(out, events::bid{.task = bid.task,
+                        .leader = bid.leader,
+                        .auction = bid.auction,
+                        .relevance = bid.relevance,
+                        .busy = bid.busy,
+                        .found_fraction = found_fraction,
+                        .mean_score = mean_score});
 }
 
 void camera_controller::take_query(const operator_query& q, controller_output& out) {
@@ -245,9 +249,10 @@ void camera_controller::take_query(const operator_query& q, controller_output& o
   pending_.clear();
   start_task(q.task, group_role::leader, me_.id, 0.0, now_, out);
   seen_relevance_ = relevance_of(q.box, false);
-  emit(out, "task_created",
-       fmt::format(R"("task":{},"min_cameras":{},"max_cameras":{},"relevance":{:.4f})", q.task.task,
-                   q.task.min_cameras, q.task.max_cameras, seen_relevance_));
+  emit(out, events::task_created{.task = q.task.task,
+                                 .min_cameras = q.task.min_cameras,
+                                 .max_cameras = q.task.max_cameras,
+                                 .relevance = seen_relevance_});
 }
 
 // --- messages --------------------------------------------------------------------------------
@@ -323,9 +328,7 @@ void camera_controller::on_query(int from, const protocol::query_relevance& q,
   p.look_until = now_ + ticks(settings_.relevance_look_time);
   p.give_up_at = now_ + ticks(settings_.bidding_timeout);
   pending_.push_back(std::move(p));
-  emit(
-      out, "queried",
-      fmt::format(R"("task":{},"leader":{},"auction":{},"from":{})", t, q.leader, q.auction, from));
+  emit(out, events::queried{.task = t, .leader = q.leader, .auction = q.auction, .from = from});
 }
 
 void camera_controller::on_bid(int from, const protocol::relevance_bid& b, controller_output& out) {
@@ -357,9 +360,8 @@ void camera_controller::on_join(int from, const protocol::join& j, controller_ou
   if (task_) {
     if (task_->task == j.task.task) return;
     if (!j.reassign) {
-      emit(out, "join_refused",
-           fmt::format(R"("task":{},"leader":{},"busy_with":{})", j.task.task, j.leader,
-                       task_->task));
+      emit(out,
+           events::join_refused{.task = j.task.task, .leader = j.leader, .busy_with = task_->task});
       return;
     }
     leave_task("reassigned", out);
@@ -375,8 +377,7 @@ void camera_controller::on_join(int from, const protocol::join& j, controller_ou
   const bool followed = bid_followed_ == j.task.task;
   start_task(j.task, group_role::member, j.leader, r, seen, out);
   if (followed) fsm_ = bid_fsm_;  // in Track (or Wait) on her already
-  emit(out, "joined",
-       fmt::format(R"("task":{},"leader":{},"reassign":{})", j.task.task, j.leader, j.reassign));
+  emit(out, events::joined{.task = j.task.task, .leader = j.leader, .reassign = j.reassign});
   send(protocol::broadcast, own_status(), out);
 }
 
@@ -433,8 +434,8 @@ void camera_controller::on_status(int from, const protocol::status& s, controlle
   }
   if (s.leader == me_.id && s.leaving) {
     if (members_.erase(s.sender) != 0)
-      emit(out, "member_dropped",
-           fmt::format(R"("task":{},"member":{},"reason":"left")", s.task, s.sender));
+      emit(out, events::member_change{
+                    .task = s.task, .member = s.sender, .reason = "left", .added = false});
     return;
   }
   if (s.leader == me_.id) {
@@ -444,8 +445,8 @@ void camera_controller::on_status(int from, const protocol::status& s, controlle
       it->second.last_status = now_;
     } else {
       // Section IV-A: "the leader node includes that node into its group".
-      emit(out, "member_added",
-           fmt::format(R"("task":{},"member":{},"reason":"status")", s.task, s.sender));
+      emit(out, events::member_change{
+                    .task = s.task, .member = s.sender, .reason = "status", .added = true});
     }
     return;
   }
@@ -458,8 +459,7 @@ void camera_controller::on_handover(const protocol::handover& h, controller_outp
   if (!task_ && h.new_leader == me_.id) {
     // Left the group while the hand-over was on its way: the task must not die with it.
     start_task(h.task, group_role::member, h.old_leader, 0.0, now_, out);
-    emit(out, "joined",
-         fmt::format(R"("task":{},"leader":{},"reassign":false)", h.task.task, h.old_leader));
+    emit(out, events::joined{.task = h.task.task, .leader = h.old_leader, .reassign = false});
   }
   // The new leader takes over even if it missed an earlier hand-over and follows someone else.
   if (!task_ || role_ != group_role::member || task_->task != h.task.task ||
@@ -496,7 +496,8 @@ void camera_controller::apply_demotions(const demotion_negotiator::actions& a,
     protocol::demotion d{step, task_->task, me_.id, {}};
     if (step == protocol::demotion_step::ack) d.members = members();
     send(peer, d, out);
-    emit(out, protocol::kind_of(d), fmt::format(R"("task":{},"to":{})", d.task, peer));
+    emit(out, events::demotion_sent{
+                  .task = d.task, .to = peer, .step = std::string(protocol::kind_of(d))});
   }
   for (int peer : a.absorbed) absorb(peer, out);
   if (a.demoted_to) follow_leader(*a.demoted_to, "demoted", out);
@@ -504,7 +505,7 @@ void camera_controller::apply_demotions(const demotion_negotiator::actions& a,
 
 void camera_controller::cancel(task_id task, int from, controller_output& out) {
   if (!cancelled_.insert(task).second) return;
-  emit(out, "cancel_heard", fmt::format(R"("task":{},"from":{})", task, from));
+  emit(out, events::cancel_heard{.task = task, .from = from});
   std::erase_if(pending_, [&](const pending_query& p) { return p.task.task == task; });
   // Spread once: the group may reach beyond the operator's camera's hop limit.
   send(protocol::broadcast, protocol::task_cancel{task, me_.id}, out);
@@ -542,9 +543,10 @@ void camera_controller::forget_group() {
 
 void camera_controller::emit_leader_changed(int leader, int previous, std::string_view reason,
                                             controller_output& out) const {
-  emit(out, "leader_changed",
-       fmt::format(R"("task":{},"leader":{},"previous":{},"reason":"{}")", task_->task, leader,
-                   previous, reason));
+  emit(out, events::leader_changed{.task = task_->task,
+                                   .leader = leader,
+                                   .previous = previous,
+                                   .reason = std::string(reason)});
 }
 
 void camera_controller::leave_task(std::string_view reason, controller_output& out) {
@@ -554,11 +556,11 @@ void camera_controller::leave_task(std::string_view reason, controller_output& o
     last.leaving = true;
     send(leader_, last, out);
   }
-  emit(out, "left_task",
-       fmt::format(R"("task":{},"reason":"{}","role":"{}")", task_->task, reason,
-                   role_ == group_role::leader ? "leader" : "member"));
+  emit(out, events::left_task{.task = task_->task,
+                              .reason = std::string(reason),
+                              .role = role_ == group_role::leader ? "leader" : "member"});
   if (role_ == group_role::leader && members_.empty())
-    emit(out, "group_vanished", fmt::format(R"("task":{})", task_->task));
+    emit(out, events::group_vanished{.task = task_->task});
   task_.reset();
   handed_over_at_.reset();
   forget_group();
@@ -608,8 +610,8 @@ void camera_controller::met_other_leader(int other, controller_output& out) {
 void camera_controller::absorb(int camera, controller_output& out) {
   if (camera == me_.id || members_.count(camera) != 0) return;
   members_[camera] = member_record{0.0, now_, now_};
-  emit(out, "member_added",
-       fmt::format(R"("task":{},"member":{},"reason":"merge")", task_->task, camera));
+  emit(out, events::member_change{
+                .task = task_->task, .member = camera, .reason = "merge", .added = true});
 }
 
 // --- timers ----------------------------------------------------------------------------------
@@ -619,10 +621,11 @@ void camera_controller::run_timers(controller_output& out) {
     const bool not_found = !it->bid_sent && now_ >= it->look_until;
     const bool expired = now_ >= it->give_up_at;
     if (not_found || expired) {
-      emit(out, "query_dropped",
-           fmt::format(
-               R"("task":{},"leader":{},"reason":"{}")", it->task.task, it->leader,
-               not_found ? (it->unconfirmed ? "not_confirmed" : "not_found") : "bidding_timeout"));
+      emit(out, events::query_dropped{
+                    .task = it->task.task,
+                    .leader = it->leader,
+                    .reason = not_found ? (it->unconfirmed ? "not_confirmed" : "not_found")
+                                        : "bidding_timeout"});
       it = pending_.erase(it);
     } else {
       ++it;
@@ -634,8 +637,7 @@ void camera_controller::run_timers(controller_output& out) {
     const auto cmd = fsm_.step(observation_of(*seen_now_), pose_, me_.frame, tick_);
     out.command = cmd.pose;
     if (cmd.state != before)
-      emit(out, "tracking",
-           fmt::format(R"("task":{},"state":"{}")", task_->task, name_of(cmd.state)));
+      emit(out, events::tracking{.task = task_->task, .state = std::string(name_of(cmd.state))});
   }
   if (fsm_.state() == vision::tracking_state::failed && members_.empty()) {
     leave_task("target_lost", out);
@@ -691,8 +693,9 @@ void camera_controller::lead(controller_output& out) {
       ++it;
       continue;
     }
-    emit(out, "member_dropped",
-         fmt::format(R"("task":{},"member":{},"reason":"{}")", task_->task, it->first, why));
+    emit(out,
+         events::member_change{
+             .task = task_->task, .member = it->first, .reason = std::string(why), .added = false});
     it = members_.erase(it);
   }
   const double mine = relevance(now_);
@@ -727,9 +730,10 @@ bool camera_controller::hand_over(double mine, controller_output& out) {
     return false;
   protocol::handover h{*task_, me_.id, best->first, members()};
   for (const auto& [m, rec] : members_) send(m, h, out);
-  emit(out, "handoff",
-       fmt::format(R"("task":{},"from":{},"to":{},"relevance":{:.4f})", task_->task, me_.id,
-                   best->first, best->second.relevance));
+  emit(out, events::handoff{.task = task_->task,
+                            .from = me_.id,
+                            .to = best->first,
+                            .relevance = best->second.relevance});
   // Not gone yet: the hand-over may be lost, or its new leader may have left or failed since
   // its last status; until the new leader is heard leading, this node is the task's only keeper.
   // (No leader_changed here: the new leader logs the change when it takes the group.)
@@ -752,9 +756,10 @@ void camera_controller::open_auction(controller_output& out) {
   send(protocol::broadcast, q, out);
   q.relay = true;
   for (const auto& [m, rec] : members_) send(m, q, out);
-  emit(out, "auction",
-       fmt::format(R"("task":{},"auction":{},"group_size":{},"relevance":{:.4f})", task_->task,
-                   a.id, 1 + members_.size(), relevance(now_)));
+  emit(out, events::auction_started{.task = task_->task,
+                                    .auction = a.id,
+                                    .group_size = 1 + members_.size(),
+                                    .relevance = relevance(now_)});
   auction_ = std::move(a);
 }
 
@@ -781,9 +786,10 @@ void camera_controller::close_auction(controller_output& out) {
     if (chosen.size() == slots) break;
     chosen.push_back(b.bidder);
   }
-  emit(out, "auction_closed",
-       fmt::format(R"("task":{},"auction":{},"bids":{},"chosen":[{}])", task_->task, auction_->id,
-                   auction_->bids.size(), fmt::join(chosen, ",")));
+  emit(out, events::auction_closed{.task = task_->task,
+                                   .auction = auction_->id,
+                                   .bids = auction_->bids.size(),
+                                   .chosen = chosen});
   auction_.reset();
   next_auction_at_ = now_ + config::to_ticks(settings_.auction_interval, tick_);
   for (int c : chosen) invite(c, false, out);
@@ -802,8 +808,7 @@ void camera_controller::invite(int camera, bool reassign, controller_output& out
   for (const auto& b : last_bids_)
     if (b.bidder == camera) r = b.relevance;
   members_[camera] = member_record{r, now_, now_};
-  emit(out, "invited",
-       fmt::format(R"("task":{},"member":{},"reassign":{})", task_->task, camera, reassign));
+  emit(out, events::invited{.task = task_->task, .member = camera, .reassign = reassign});
 }
 
 // --- conflict resolution (Section IV-B, Fig. 14) ---------------------------------------------
@@ -852,9 +857,9 @@ void camera_controller::start_csp(std::vector<protocol::relevance_bid> contended
   }
   std::vector<int> cameras;
   for (const auto& b : contended) cameras.push_back(b.bidder);
-  emit(out, "conflict",
-       fmt::format(R"("task":{},"with_tasks":[{}],"cameras":[{}])", task_->task,
-                   fmt::join(tasks, ","), fmt::join(cameras, ",")));
+  emit(out, events::conflict{.task = task_->task,
+                             .with_tasks = {tasks.begin(), tasks.end()},
+                             .cameras = {cameras.begin(), cameras.end()}});
   round.bids = std::move(contended);
   csp_ = std::move(round);
 }
@@ -865,7 +870,7 @@ void camera_controller::on_csp_query(int from, const protocol::csp_query& q,
   if (csp_) {
     // Two leaders centralising the same conflict: the lower task id solves it.
     if (task_->task < q.solver_task) return;
-    emit(out, "csp_yielded", fmt::format(R"("task":{},"to_task":{})", task_->task, q.solver_task));
+    emit(out, events::csp_yielded{.task = task_->task, .to_task = q.solver_task});
     csp_.reset();
   }
   send(from, own_csp_data(q.round), out);
@@ -883,16 +888,18 @@ void camera_controller::solve_csp(controller_output& out) {
   for (const auto& d : csp_->data) groups.push_back(d);
   const auto built = build_csp(groups, settings_.membership_relevance_threshold);
   const auto solution = protocol::solve(built.problem, solver_kind(settings_.solver));
-  std::vector<std::string> minima;
+  events::task_counts minima;
   for (std::size_t g = 0; g < built.groups.size(); ++g)
-    minima.push_back(fmt::format(R"("{}":{})", built.groups[g].task,
-                                 g < solution.minima.size() ? solution.minima[g] : 0));
-  emit(out, "csp_solved",
-       fmt::format(R"("task":{},"solver":"{}","groups":{},"cameras":{},"weight":{:.4f},)"
-                   R"("nodes_explored":{},"backtracks":{},"relaxed":{},"minima":{{{}}})",
-                   task_->task, config::yaml_name(settings_.solver), built.groups.size(),
-                   built.cameras.size(), solution.weight, solution.nodes_explored,
-                   solution.backtracks, solution.relaxed, fmt::join(minima, ",")));
+    minima.emplace_back(built.groups[g].task, g < solution.minima.size() ? solution.minima[g] : 0u);
+  emit(out, events::csp_solved{.task = task_->task,
+                               .solver = std::string(config::yaml_name(settings_.solver)),
+                               .groups = built.groups.size(),
+                               .cameras = built.cameras.size(),
+                               .weight = solution.weight,
+                               .nodes_explored = solution.nodes_explored,
+                               .backtracks = solution.backtracks,
+                               .relaxed = solution.relaxed,
+                               .minima = std::move(minima)});
   for (std::size_t g = 0; g < built.groups.size(); ++g) {
     const auto cameras = built.assigned(solution, g);
     const auto& group = built.groups[g];
@@ -910,9 +917,7 @@ void camera_controller::solve_csp(controller_output& out) {
 
 void camera_controller::on_csp_result(const protocol::csp_result& r, controller_output& out) {
   if (!task_ || role_ != group_role::leader || r.task != task_->task || csp_) return;
-  emit(out, "csp_applied",
-       fmt::format(R"("task":{},"solver_camera":{},"cameras":[{}])", r.task, r.solver,
-                   fmt::join(r.cameras, ",")));
+  emit(out, events::csp_applied{.task = r.task, .solver_camera = r.solver, .cameras = r.cameras});
   apply_assignment(r.cameras, out);
 }
 
@@ -925,8 +930,9 @@ void camera_controller::apply_assignment(const std::vector<int>& cameras, contro
       ++it;
       continue;
     }
-    emit(out, "member_dropped",
-         fmt::format(R"("task":{},"member":{},"reason":"reassigned")", task_->task, it->first));
+    emit(out,
+         events::member_change{
+             .task = task_->task, .member = it->first, .reason = "reassigned", .added = false});
     it = members_.erase(it);
   }
   for (int c : cameras)

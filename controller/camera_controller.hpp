@@ -11,6 +11,7 @@
 #include "controller/controller_io.hpp"
 #include "controller/demotion_negotiator.hpp"
 #include "controller/strategy.hpp"
+#include "events/event.hpp"
 #include "vision/frame_size.hpp"
 #include "vision/tracker.hpp"
 
@@ -144,7 +145,8 @@ class camera_controller final : public strategy {
   protocol::status own_status() const;
 
   void send(int to, protocol::group_message m, controller_output& out) const;
-  void emit(controller_output& out, std::string_view kind, const std::string& fields) const;
+  // Logs `e` as this camera's (its `camera` member set to this node).
+  void emit(controller_output& out, events::event e) const;
   double relevance_of(const cv::Rect2d& box, bool busy) const;
   double decayed(double relevance, std::int64_t age) const;
   std::int64_t ticks(config::seconds d) const;

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "events/event.hpp"
 #include "opencv2/core/mat.hpp"
 #include "opencv2/core/types.hpp"
 #include "protocol/group_messages.hpp"
@@ -90,11 +91,18 @@ struct outgoing_message {
   protocol::group_message message;
 };
 
-/// An event for the run's log: its kind and its JSON members (without braces).
+/// An event for the run's log: its kind and its JSON members (without braces). The log's own
+/// kinds are made from their structs (events/event.hpp) with `logged`; a strategy may log kinds
+/// of its own.
 struct controller_event {
   std::string kind;
   std::string fields_json;
 };
+
+/// The log line of `e`, one of the vocabulary's events.
+inline controller_event logged(const events::event& e) {
+  return {std::string(events::kind_of(e)), events::fields_json(e)};
+}
 
 /// Take the model of whoever is in `box` of the frame just sensed as task `task`'s target: the
 /// sensor takes her signature there and starts following her, the node looks for her in the

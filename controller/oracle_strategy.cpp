@@ -19,13 +19,11 @@ frame_plan oracle_strategy::plan(std::int64_t tick, bool) {
   auto task = view_->task_of(tick);
   if (task != task_) {
     if (task_)
-      p.events.push_back(
-          {"left_task", fmt::format(R"("camera":{},"task":{},"reason":"oracle","role":"member")",
-                                    me_.id, *task_)});
+      p.events.push_back(logged(events::left_task{
+          .camera = me_.id, .task = *task_, .reason = "oracle", .role = "member"}));
     if (task)
       p.events.push_back(
-          {"joined",
-           fmt::format(R"("camera":{},"task":{},"leader":0,"reassign":false)", me_.id, *task)});
+          logged(events::joined{.camera = me_.id, .task = *task, .leader = 0, .reassign = false}));
     task_ = task;
   }
   p.wants_frame = task_.has_value();

@@ -16,8 +16,12 @@ namespace {
 // The looks of one task in one tick: (camera, look).
 using tick_looks = std::vector<std::pair<int, const look_record*>>;
 
-bool is_metric_kind(const std::string& kind) {
-  return kind == "handoff" || kind == "leader_changed" || kind == "conflict" || kind == "fault";
+// The kinds the metrics read: every other line is skipped before it is parsed.
+bool is_metric_kind(std::string_view kind) {
+  for (std::string_view k : {events::handoff::name, events::leader_changed::name,
+                             events::conflict::name, events::fault_event::name})
+    if (kind == k) return true;
+  return false;
 }
 
 std::string_view name_of(target_choice by) {
@@ -140,22 +144,24 @@ void group_figures(const indexed_log& index, task_metrics& m, std::int64_t start
 void event_figures(const std::vector<logged_event>& events, const indexed_log& index,
                    const std::vector<std::int64_t>& observed_ticks, task_metrics& m,
                    std::int64_t start, std::int64_t end, double tick_s) {
-  const int task = static_cast<int>(m.task);
   for (const auto& e : events) {
     if (e.tick < start || e.tick >= end) continue;
-    if (e.kind == "handoff" && e.task == task) ++m.handoffs;
-    if (e.kind == "leader_changed" && e.task == task) ++m.leader_changes;
-    if (e.kind == "conflict" &&
-        (e.task == task ||
-         std::find(e.other_tasks.begin(), e.other_tasks.end(), task) != e.other_tasks.end()))
+    if (const auto* h = std::get_if<events::handoff>(&e.event); h && h->task == m.task)
+      ++m.handoffs;
+    if (const auto* l = std::get_if<events::leader_changed>(&e.event); l && l->task == m.task)
+      ++m.leader_changes;
+    if (const auto* c = std::get_if<events::conflict>(&e.event);
+        c && (c->task == m.task ||
+              std::find(c->with_tasks.begin(), c->with_tasks.end(), m.task) != c->with_tasks.end()))
       ++m.csp_invocations;
-    if (e.kind != "fault" || !e.takes_camera_down) continue;
+    const auto* f = std::get_if<events::fault_event>(&e.event);
+    if (f == nullptr || !f->takes_camera_down()) continue;
     // A failure counts for the task when the camera was in its group just before.
     const auto* before = index.at(m.task, e.tick - 1);
     if (before == nullptr || std::none_of(before->begin(), before->end(),
-                                          [&](const auto& l) { return l.first == e.camera; }))
+                                          [&](const auto& l) { return l.first == f->camera; }))
       continue;
-    recovery r{e.camera, e.t, std::nullopt};
+    recovery r{f->camera, e.t, std::nullopt};
     auto next = std::upper_bound(observed_ticks.begin(), observed_ticks.end(), e.tick);
     if (next != observed_ticks.end()) r.recovered_after_s = (*next - e.tick) * tick_s;
     m.failure_recoveries.push_back(r);
@@ -176,19 +182,9 @@ std::vector<logged_event> read_events(const std::filesystem::path& events_jsonl)
     const auto end = line.find('"', at + 8);
     if (!is_metric_kind(line.substr(at + 8, end - at - 8))) continue;
     const auto j = nlohmann::json::parse(line);
-    logged_event e;
-    e.tick = j.value("tick", std::int64_t{0});
-    e.t = j.value("t", 0.0);
-    e.kind = j.value("kind", std::string{});
-    e.camera = j.value("camera", 0);
-    e.task = j.value("task", -1);
-    if (j.contains("with_tasks")) e.other_tasks = j["with_tasks"].get<std::vector<int>>();
-    if (e.kind == "fault") {
-      const auto fault = j.value("fault", std::string{});
-      e.takes_camera_down =
-          j.value("applied", false) && (fault == "crash" || fault == "crash_and_recover");
-    }
-    out.push_back(std::move(e));
+    auto event = events::parse(j);
+    if (!event) continue;  // a line of its kind without its members: nothing to count
+    out.push_back({j.value("tick", std::int64_t{0}), j.value("t", 0.0), std::move(*event)});
   }
   return out;
 }

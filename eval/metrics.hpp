@@ -12,6 +12,7 @@
 
 #include "config/scenario.hpp"
 #include "eval/observation_log.hpp"
+#include "events/event.hpp"
 #include "nlohmann/json_fwd.hpp"
 
 namespace argus::world {
@@ -25,15 +26,11 @@ namespace argus::eval {
 struct logged_event {
   std::int64_t tick = 0;
   double t = 0.0;
-  std::string kind;
-  int camera = 0;
-  int task = -1;
-  /// For `conflict`: the other tasks; for `fault`: whether it took a camera down.
-  std::vector<int> other_tasks;
-  bool takes_camera_down = false;
+  events::event event;
 };
 
-/// Reads the kinds of `events.jsonl` the metrics need.
+/// Reads the kinds of `events.jsonl` the metrics need (handoff, leader_changed, conflict,
+/// fault), as the log's event structs.
 std::vector<logged_event> read_events(const std::filesystem::path& events_jsonl);
 
 /// A camera failure and how long the task took to observe its target again.

@@ -1,6 +1,9 @@
 #include "live/console_state.hpp"
 
 #include <chrono>
+#include <cstdlib>
+#include <type_traits>
+#include <variant>
 
 #include "fmt/format.h"
 
@@ -11,17 +14,6 @@ namespace {
 constexpr std::size_t trail_points = 600;
 // How many notable events the page's log shows.
 constexpr std::size_t recent_events = 40;
-
-int camera_of(const std::string& source) {
-  constexpr std::string_view prefix = "camera/";
-  if (source.rfind(prefix, 0) != 0) return -1;
-  return std::atoi(source.c_str() + prefix.size());
-}
-
-int int_field(const nlohmann::json& f, const char* key, int fallback = -1) {
-  const auto it = f.find(key);
-  return it != f.end() && it->is_number_integer() ? it->get<int>() : fallback;
-}
 
 double wall_now() {
   using namespace std::chrono;
@@ -85,72 +77,121 @@ void console_state::note(std::string line) {
   if (recent_.size() > recent_events) recent_.pop_front();
 }
 
+namespace {
+
+template <class E, class... Kinds>
+constexpr bool is_one_of = (std::is_same_v<E, Kinds> || ...);
+
+// The kinds the page's log lists.
+struct listed {
+  template <class E>
+  bool operator()(const E&) const {
+    return is_one_of<E, events::task_issued, events::task_cancelled, events::task_refused,
+                     events::task_target, events::task_created, events::joined, events::left_task,
+                     events::leader_changed, events::fault_event, events::node_recovered,
+                     events::handoff, events::group_vanished, events::render_failed>;
+  }
+};
+
+}  // namespace
+
 void console_state::apply(const event_line& ev) {
-  static const std::set<std::string> shown{
-      "task_issued", "task_cancelled", "task_refused",   "task_target", "task_created",
-      "joined",      "left_task",      "leader_changed", "fault",       "node_recovered",
-      "handoff",     "group_vanished", "render_failed"};
-  if (shown.count(ev.kind) != 0) {
+  // The network's chatter is most of the log and changes nothing here: not even parsed.
+  if (ev.kind == events::net_sent::name || ev.kind == events::net_received::name) return;
+  auto parsed = events::parse(ev.kind, ev.fields_json);
+  if (!parsed) return;
+  // A camera's line that does not name its camera (written by hand) is its source's.
+  std::visit(
+      [&](auto& e) {
+        if constexpr (requires { e.camera; })
+          if (e.camera == 0 && ev.source.starts_with("camera/"))
+            e.camera = std::atoi(ev.source.c_str() + std::string_view("camera/").size());
+      },
+      *parsed);
+  if (std::visit(listed{}, *parsed)) {
     recent_.push_back(fmt::format("t={:.1f}s {} {} {}",
                                   static_cast<double>(ev.tick) * tick_seconds_, ev.source, ev.kind,
                                   ev.fields_json));
     if (recent_.size() > recent_events) recent_.pop_front();
   }
-  if (ev.kind == "net_sent" || ev.kind == "net_received") return;
-  const auto f = nlohmann::json::parse("{" + ev.fields_json + "}", nullptr, false);
-  if (f.is_discarded()) return;
-  const int camera = int_field(f, "camera", camera_of(ev.source));
-  const int task = int_field(f, "task");
-  auto cam = cameras_.find(camera);
-  if (ev.kind == "node_state" && cam != cameras_.end() && f.contains("to")) {
-    cam->second.state = f["to"].get<std::string>();
-    if (cam->second.state == "idle") cam->second.tracking.clear();
-  } else if (ev.kind == "tracking" && cam != cameras_.end() && f.contains("state")) {
-    cam->second.tracking = f["state"].get<std::string>();
-  } else if (ev.kind == "task_issued" && task >= 0) {
-    auto& t = tasks_[task];
-    t.camera = camera;
-    t.issued_tick = ev.tick;
-    t.status = "issued";
-    t.pedestrian = int_field(f, "pedestrian");
-  } else if (ev.kind == "task_target" && task >= 0) {
-    tasks_[task].pedestrian = int_field(f, "pedestrian");
-    tasks_[task].status = "observed";
-  } else if (ev.kind == "task_refused" && task >= 0) {
-    tasks_[task].status = "refused: " + f.value("reason", std::string("?"));
-  } else if (ev.kind == "task_cancelled" && task >= 0) {
-    tasks_[task].status = "cancelled";
-  } else if (ev.kind == "task_created" && task >= 0) {
-    groups_[task] = group_entry{camera, {camera}};
-  } else if (ev.kind == "joined" && task >= 0) {
-    auto& g = groups_[task];
-    g.members.insert(camera);
-    g.leader = int_field(f, "leader", g.leader);
-  } else if (ev.kind == "left_task" && task >= 0) {
-    auto g = groups_.find(task);
-    if (g != groups_.end()) {
-      g->second.members.erase(camera);
-      if (g->second.leader == camera) g->second.leader = 0;
-      if (g->second.members.empty()) groups_.erase(g);
-    }
-  } else if (ev.kind == "leader_changed" && task >= 0) {
-    auto& g = groups_[task];
-    g.members.insert(camera);
-    g.leader = int_field(f, "leader", g.leader);
-  } else if (ev.kind == "fault" && f.value("applied", false) && cam != cameras_.end() &&
-             f.value("fault", std::string()) == "crash") {
-    cam->second.alive = false;
-    cam->second.state = "crashed";
-    cam->second.tracking.clear();
-    cam->second.frame.image = cv::Mat();
-    for (auto it = groups_.begin(); it != groups_.end();) {
-      it->second.members.erase(camera);
-      it = it->second.members.empty() ? groups_.erase(it) : std::next(it);
-    }
-  } else if (ev.kind == "node_recovered" && f.value("applied", false) && cam != cameras_.end()) {
-    cam->second.alive = true;
-    cam->second.state = "idle";
+  std::visit([&](const auto& e) { take(e, ev); }, *parsed);
+}
+
+void console_state::take(const events::node_state& e, const event_line&) {
+  auto cam = cameras_.find(e.camera);
+  if (cam == cameras_.end()) return;
+  cam->second.state = e.to;
+  if (cam->second.state == "idle") cam->second.tracking.clear();
+}
+
+void console_state::take(const events::tracking& e, const event_line&) {
+  if (auto cam = cameras_.find(e.camera); cam != cameras_.end()) cam->second.tracking = e.state;
+}
+
+void console_state::take(const events::task_issued& e, const event_line& ev) {
+  auto& t = tasks_[static_cast<int>(e.task)];
+  t.camera = e.camera;
+  t.issued_tick = ev.tick;
+  t.status = "issued";
+  t.pedestrian = e.pedestrian.value_or(-1);
+}
+
+void console_state::take(const events::task_target& e, const event_line&) {
+  auto& t = tasks_[static_cast<int>(e.task)];
+  t.pedestrian = e.pedestrian;
+  t.status = "observed";
+}
+
+void console_state::take(const events::task_refused& e, const event_line&) {
+  tasks_[static_cast<int>(e.task)].status = "refused: " + e.reason;
+}
+
+void console_state::take(const events::task_cancelled& e, const event_line&) {
+  tasks_[static_cast<int>(e.task)].status = "cancelled";
+}
+
+void console_state::take(const events::task_created& e, const event_line&) {
+  groups_[static_cast<int>(e.task)] = group_entry{e.camera, {e.camera}};
+}
+
+void console_state::take(const events::joined& e, const event_line&) {
+  auto& g = groups_[static_cast<int>(e.task)];
+  g.members.insert(e.camera);
+  g.leader = e.leader;
+}
+
+void console_state::take(const events::left_task& e, const event_line&) {
+  auto g = groups_.find(static_cast<int>(e.task));
+  if (g == groups_.end()) return;
+  g->second.members.erase(e.camera);
+  if (g->second.leader == e.camera) g->second.leader = 0;
+  if (g->second.members.empty()) groups_.erase(g);
+}
+
+void console_state::take(const events::leader_changed& e, const event_line&) {
+  auto& g = groups_[static_cast<int>(e.task)];
+  g.members.insert(e.camera);
+  g.leader = e.leader;
+}
+
+void console_state::take(const events::fault_event& e, const event_line&) {
+  auto cam = cameras_.find(e.camera);
+  if (!e.applied || e.fault != "crash" || cam == cameras_.end()) return;
+  cam->second.alive = false;
+  cam->second.state = "crashed";
+  cam->second.tracking.clear();
+  cam->second.frame.image = cv::Mat();
+  for (auto it = groups_.begin(); it != groups_.end();) {
+    it->second.members.erase(e.camera);
+    it = it->second.members.empty() ? groups_.erase(it) : std::next(it);
   }
+}
+
+void console_state::take(const events::node_recovered& e, const event_line&) {
+  auto cam = cameras_.find(e.camera);
+  if (!e.applied || cam == cameras_.end()) return;
+  cam->second.alive = true;
+  cam->second.state = "idle";
 }
 
 nlohmann::json console_state::state_json() const {

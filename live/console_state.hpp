@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "config/scenario.hpp"
+#include "events/event.hpp"
 #include "nlohmann/json.hpp"
 #include "opencv2/core.hpp"
 #include "world/snapshot.hpp"
@@ -123,6 +124,21 @@ class console_state {
   };
 
   void apply(const event_line& ev);
+  // What each kind changes in the tables; the others change nothing.
+  void take(const events::node_state& e, const event_line& ev);
+  void take(const events::tracking& e, const event_line& ev);
+  void take(const events::task_issued& e, const event_line& ev);
+  void take(const events::task_target& e, const event_line& ev);
+  void take(const events::task_refused& e, const event_line& ev);
+  void take(const events::task_cancelled& e, const event_line& ev);
+  void take(const events::task_created& e, const event_line& ev);
+  void take(const events::joined& e, const event_line& ev);
+  void take(const events::left_task& e, const event_line& ev);
+  void take(const events::leader_changed& e, const event_line& ev);
+  void take(const events::fault_event& e, const event_line& ev);
+  void take(const events::node_recovered& e, const event_line& ev);
+  template <class Other>
+  void take(const Other&, const event_line&) {}
 
   double tick_seconds_ = 1.0 / 15.0;
   std::int64_t end_tick_ = 0;

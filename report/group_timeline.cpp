@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <map>
 #include <optional>
+#include <variant>
+
+#include "events/event.hpp"
 
 namespace argus::report {
 
@@ -18,47 +21,11 @@ struct open_task {
 
 class timeline_builder {
  public:
-  void on(const nlohmann::json& e) {
-    const std::string kind = text_field(e, "kind");
-    const double t = e.value("t", 0.0);
-    const int task = static_cast<int>(integer_field(e, "task"));
-    const int camera = static_cast<int>(integer_field(e, "camera"));
-    const bool about_a_task = kind == "task_issued" || kind == "task_created" || kind == "joined" ||
-                              kind == "left_task" || kind == "leader_changed" ||
-                              kind == "handoff" || kind == "task_cancelled";
-    if (about_a_task && task < 0) return;  // no task named: nothing to place it in
-    if (kind == "task_issued") {
-      auto& open = task_at(task, t);
-      open.done.pedestrian = static_cast<int>(integer_field(e, "pedestrian"));
-    } else if (kind == "task_created") {
-      join(task_at(task, t), camera, t);
-      lead(task_at(task, t), camera, t);
-    } else if (kind == "joined") {
-      auto& open = task_at(task, t);
-      join(open, camera, t);
-      const int leader = static_cast<int>(integer_field(e, "leader"));
-      if (!open.leader_since && leader >= 0) lead(open, leader, t);
-    } else if (kind == "left_task") {
-      leave(task_at(task, t), camera, t);
-    } else if (kind == "leader_changed") {
-      auto& open = task_at(task, t);
-      const int leader = static_cast<int>(integer_field(e, "leader", camera));
-      if (!open.leader_since || open.leader_since->first != leader) lead(open, leader, t);
-    } else if (kind == "handoff") {
-      task_at(task, t).done.handoffs_s.push_back(t);
-    } else if (kind == "task_cancelled") {
-      end(task_at(task, t), t);
-    } else if (kind == "fault") {
-      const bool applied = !e.contains("applied") || e.value("applied", false);
-      if (!applied) return;
-      const std::string fault = text_field(e, "fault");
-      failures_.push_back({t, camera, fault});
-      if (fault == "crash" || fault == "crash_and_recover")
-        for (auto& [id, open] : tasks_) leave(open, camera, t);
-    } else if (kind == "node_recovered") {
-      if (!e.contains("applied") || e.value("applied", false))
-        failures_.push_back({t, camera, "recovered"});
-    }
+  void on(const nlohmann::json& line) {
+    const auto event = events::parse(line);
+    if (!event) return;
+    const double t = line.value("t", 0.0);
+    std::visit([&](const auto& e) { on(e, t); }, *event);
   }
 
   group_timeline finish(double end_s) {
@@ -73,6 +40,41 @@ class timeline_builder {
   }
 
  private:
+  static int id(std::uint32_t task) { return static_cast<int>(task); }
+
+  void on(const events::task_issued& e, double t) {
+    task_at(id(e.task), t).done.pedestrian = e.pedestrian.value_or(-1);
+  }
+  void on(const events::task_created& e, double t) {
+    join(task_at(id(e.task), t), e.camera, t);
+    lead(task_at(id(e.task), t), e.camera, t);
+  }
+  void on(const events::joined& e, double t) {
+    auto& open = task_at(id(e.task), t);
+    join(open, e.camera, t);
+    if (!open.leader_since && e.leader >= 0) lead(open, e.leader, t);
+  }
+  void on(const events::left_task& e, double t) { leave(task_at(id(e.task), t), e.camera, t); }
+  void on(const events::leader_changed& e, double t) {
+    auto& open = task_at(id(e.task), t);
+    if (!open.leader_since || open.leader_since->first != e.leader) lead(open, e.leader, t);
+  }
+  void on(const events::handoff& e, double t) {
+    task_at(id(e.task), t).done.handoffs_s.push_back(t);
+  }
+  void on(const events::task_cancelled& e, double t) { end(task_at(id(e.task), t), t); }
+  void on(const events::fault_event& e, double t) {
+    if (!e.applied) return;
+    failures_.push_back({t, e.camera, e.fault});
+    if (e.takes_camera_down())
+      for (auto& [task, open] : tasks_) leave(open, e.camera, t);
+  }
+  void on(const events::node_recovered& e, double t) {
+    if (e.applied) failures_.push_back({t, e.camera, "recovered"});
+  }
+  template <class Other>
+  void on(const Other&, double) {}
+
   open_task& task_at(int task, double t) {
     auto [it, added] = tasks_.try_emplace(task);
     if (added) {

@@ -63,11 +63,27 @@ struct trace : ::testing::Test {
     log.sent[{0, "queryrelevance"}] = 3;
     log.sent[{0, "status"}] = 7;
     log.sent[{1, "status"}] = 100;  // another task's
-    events.push_back({7, 7.0 / 15.0, "fault", 1, -1, {}, true});
-    events.push_back({8, 8.0 / 15.0, "leader_changed", 2, 0, {}, false});
-    events.push_back({3, 3.0 / 15.0, "handoff", 1, 0, {}, false});
-    events.push_back({3, 3.0 / 15.0, "handoff", 1, 5, {}, false});  // another task's
-    events.push_back({5, 5.0 / 15.0, "conflict", 4, 5, {0}, false});
+    events.push_back({7, 7.0 / 15.0,
+                      events::fault_event{.fault = "crash",
+                                          .camera = 1,
+                                          .peer = std::nullopt,
+                                          .random = false,
+                                          .applied = true}});
+    events::leader_changed changed;
+    changed.camera = 2;
+    changed.task = 0;
+    events.push_back({8, 8.0 / 15.0, changed});
+    events::handoff handoff;
+    handoff.camera = 1;
+    handoff.task = 0;
+    events.push_back({3, 3.0 / 15.0, handoff});
+    handoff.task = 5;
+    events.push_back({3, 3.0 / 15.0, handoff});  // another task's
+    events::conflict conflict;
+    conflict.camera = 4;
+    conflict.task = 5;
+    conflict.with_tasks = {0};
+    events.push_back({5, 5.0 / 15.0, conflict});
   }
 };
 
