@@ -26,50 +26,46 @@ struct namer {
   }
 };
 
-using reader = std::function<std::optional<event>(const nlohmann::ordered_json&)>;
+template <class Json>
+using reader = std::function<std::optional<event>(const Json&)>;
+template <class Json>
+using reader_table = std::map<std::string, reader<Json>, std::less<>>;
 
-template <class E>
-reader read_as() {
-  return [](const nlohmann::ordered_json& j) -> std::optional<event> {
+// Reads a line as E, then `set` gives the kind's variant (e.g. neighbour_lost's `up`).
+template <class E, class Json>
+reader<Json> read_as(std::function<void(E&)> set = {}) {
+  return [set](const Json& j) -> std::optional<event> {
     auto e = read_members<E>(j);
     if (!e) return std::nullopt;
+    if (set) set(*e);
     return event{std::move(*e)};
   };
 }
 
-// A kind some struct serves under another name than its own (its variants).
-template <class E, class Set>
-reader read_as(Set set) {
-  return [set](const nlohmann::ordered_json& j) -> std::optional<event> {
-    auto e = read_members<E>(j);
-    if (!e) return std::nullopt;
-    set(*e);
-    return event{std::move(*e)};
-  };
-}
-
-template <class... E>
-void add_all(std::map<std::string, reader, std::less<>>& readers, std::variant<E...>*) {
+template <class Json, class... E>
+void add_all(reader_table<Json>& readers, std::variant<E...>*) {
   (
       [&] {
         if constexpr (!std::is_same_v<E, custom>)
-          readers.emplace(std::string(E::name), read_as<E>());
+          readers.emplace(std::string(E::name), read_as<E, Json>());
       }(),
       ...);
 }
 
-const std::map<std::string, reader, std::less<>>& readers() {
+// One table per JSON type: a line already parsed is read as it is.
+template <class Json>
+const reader_table<Json>& readers() {
   static const auto table = [] {
-    std::map<std::string, reader, std::less<>> r;
-    add_all(r, static_cast<event*>(nullptr));
+    reader_table<Json> r;
+    add_all<Json>(r, static_cast<event*>(nullptr));
     for (const char* step : {"demoteack", "demotenack", "demoteretry"})
-      r.emplace(step, read_as<demotion_sent>([step](demotion_sent& e) { e.step = step; }));
+      r.emplace(step, read_as<demotion_sent, Json>([step](demotion_sent& e) { e.step = step; }));
     r.insert_or_assign("neighbour_lost",
-                       read_as<neighbour_change>([](neighbour_change& e) { e.up = false; }));
+                       read_as<neighbour_change, Json>([](neighbour_change& e) { e.up = false; }));
     r.insert_or_assign("member_dropped",
-                       read_as<member_change>([](member_change& e) { e.added = false; }));
-    r.insert_or_assign("pedestrian_left",
-                       read_as<pedestrian_moved>([](pedestrian_moved& e) { e.entered = false; }));
+                       read_as<member_change, Json>([](member_change& e) { e.added = false; }));
+    r.insert_or_assign("pedestrian_left", read_as<pedestrian_moved, Json>(
+                                              [](pedestrian_moved& e) { e.entered = false; }));
     return r;
   }();
   return table;
@@ -97,9 +93,8 @@ std::optional<event> parse(const nlohmann::json& line) {
   const auto kind = line.find("kind");
   if (kind == line.end() || !kind->is_string()) return std::nullopt;
   const auto& name = kind->get_ref<const std::string&>();
-  const auto& table = readers();
-  if (auto it = table.find(name); it != table.end())
-    return it->second(nlohmann::ordered_json::parse(line.dump()));
+  const auto& table = readers<nlohmann::json>();
+  if (auto it = table.find(name); it != table.end()) return it->second(line);
   // Not ours: its members are the line's but the common four.
   auto members = line;
   for (const char* common : {"t", "tick", "source", "kind"}) members.erase(common);
@@ -108,7 +103,7 @@ std::optional<event> parse(const nlohmann::json& line) {
 }
 
 std::optional<event> parse(std::string_view kind, std::string_view fields_json) {
-  const auto& table = readers();
+  const auto& table = readers<nlohmann::ordered_json>();
   auto it = table.find(kind);
   if (it == table.end()) return event{custom{std::string(kind), std::string(fields_json)}};
   const auto j =

@@ -84,23 +84,20 @@ void write_value(std::string& out, const T& v) {
   }
 }
 
-// JSON in the order it was written (an object's members keep theirs).
-using json = nlohmann::ordered_json;
-
-template <class T>
-bool read_value(const json& j, T& v) {
+template <class Json, class T>
+bool read_value(const Json& j, T& v) {
   if constexpr (std::is_same_v<T, bool>) {
     if (!j.is_boolean()) return false;
-    v = j.get<bool>();
+    v = j.template get<bool>();
   } else if constexpr (std::is_same_v<T, std::string>) {
     if (!j.is_string()) return false;
-    v = j.get<std::string>();
+    v = j.template get<std::string>();
   } else if constexpr (std::is_same_v<T, json_text>) {
     if (!j.is_string()) return false;
-    v.text = j.get<std::string>();
+    v.text = j.template get<std::string>();
   } else if constexpr (is_fixed<T>::value) {
     if (!j.is_number()) return false;
-    v.value = j.get<double>();
+    v.value = j.template get<double>();
   } else if constexpr (std::is_same_v<T, task_counts>) {
     if (!j.is_object()) return false;
     v.clear();
@@ -118,7 +115,7 @@ bool read_value(const json& j, T& v) {
     }
   } else {
     if (!j.is_number()) return false;
-    v = j.get<T>();
+    v = j.template get<T>();
   }
   return true;
 }
@@ -147,8 +144,9 @@ std::string fields_of(const Event& e) {
 
 /// `Event` read from a line's JSON object; nothing when a member is of another type. A member
 /// the line lacks keeps its default (a hand-made log, or one of an older version).
-template <class Event>
-std::optional<Event> read_members(const nlohmann::ordered_json& line) {
+/// (Json: nlohmann::json, or nlohmann::ordered_json to keep an object member's order.)
+template <class Event, class Json>
+std::optional<Event> read_members(const Json& line) {
   Event e;
   bool ok = true;
   e.members([&](std::string_view name, auto& value) {

@@ -16,7 +16,10 @@
 namespace argus::pybridge {
 
 env_session::env_session(const std::string& scenario_file, const std::vector<std::string>& set)
-    : scenario_(config::load_scenario(scenario_file, overrides_from(set))) {}
+    : scenario_(config::load_scenario(scenario_file, overrides_from(set))) {
+  static std::atomic<int> sessions{0};
+  strategy_name_ = fmt::format("env:{}", ++sessions);
+}
 
 env_session::~env_session() {
   close();
@@ -36,11 +39,11 @@ bool env_session::pixels() const {
 env_exchange::collected env_session::reset(std::optional<std::uint64_t> seed,
                                            const std::filesystem::path& output_dir) {
   close();
-  static std::atomic<int> runs{0};
   auto exchange = std::make_shared<env_exchange>();
   exchange_ = exchange;
   auto scenario = scenario_;
-  scenario.controller.strategy = fmt::format("env:{}", ++runs);
+  // The session's one name, now standing for this run's agents (the last run's are gone).
+  scenario.controller.strategy = strategy_name_;
   controller::register_strategy(
       {scenario.controller.strategy,
        [exchange](const controller::strategy_context& c) -> std::unique_ptr<controller::strategy> {

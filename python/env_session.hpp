@@ -42,6 +42,8 @@ class env_session {
 
  private:
   config::scenario scenario_;
+  // The registry's name for this session's agents.
+  std::string strategy_name_;
   std::shared_ptr<env_exchange> exchange_;
   std::thread run_;
   // The run's end tick, and the tick collected last.

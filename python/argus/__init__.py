@@ -76,6 +76,16 @@ def _yaml_value(value):
     return json.dumps(value)
 
 
+def _set_texts(set=None, duration=None, **fields):
+    """The KEY=VALUE overrides of `set`, `duration` (seconds, or a text such as "2 min") and
+    the named run fields (run.seed=..., given as seed=...) that are not None."""
+    texts = [f"{key}={_yaml_value(value)}" for key, value in (set or {}).items()]
+    if duration is not None:
+        fields["duration"] = duration if isinstance(duration, str) else f"{duration} s"
+    texts += [f"run.{key}={_yaml_value(value)}" for key, value in fields.items() if value is not None]
+    return texts
+
+
 def run(scenario, seed=None, set=None, duration=None, strategy=None, out=None, progress=False):
     """Runs ``scenario`` (a YAML file) and returns its metrics, summary and paths.
 
@@ -85,13 +95,7 @@ def run(scenario, seed=None, set=None, duration=None, strategy=None, out=None, p
     of bad input, and argus.RunFailed when a strategy raised (the run's outputs stay complete
     up to that tick).
     """
-    texts = [f"{key}={_yaml_value(value)}" for key, value in (set or {}).items()]
-    if seed is not None:
-        texts.append(f"run.seed={int(seed)}")
-    if duration is not None:
-        texts.append(f"run.duration={duration if isinstance(duration, str) else f'{duration} s'}")
-    if out is not None:
-        texts.append(f"run.output_dir={out}")
+    texts = _set_texts(set, duration, seed=None if seed is None else int(seed), output_dir=out)
     result = _argus._run(str(scenario), texts, strategy, bool(progress))
     if result["failure"]:
         raise RunFailed(result["failure"], result)

@@ -39,11 +39,8 @@ class parallel_env:  # noqa: N801  (PettingZoo's name for the constructor)
     metadata = {"name": "argus_parallel_v0", "render_modes": []}
 
     def __init__(self, scenario, set=None, duration=None, out=None, max_looks=MAX_LOOKS):
-        from . import _yaml_value
-        texts = [f"{k}={_yaml_value(v)}" for k, v in (set or {}).items()]
-        if duration is not None:
-            texts.append(f"run.duration={duration if isinstance(duration, str) else f'{duration} s'}")
-        self._session = _argus.EnvSession(str(scenario), texts)
+        from . import _set_texts
+        self._session = _argus.EnvSession(str(scenario), _set_texts(set, duration))
         self._cameras = {c.id: c for c in self._session.cameras()}
         self._out = out
         self._tmp = None

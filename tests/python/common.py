@@ -8,7 +8,6 @@ ARGUS = os.environ.get("ARGUS", "argus")
 SOURCE = os.environ.get("ARGUS_SOURCE", os.path.join(os.path.dirname(__file__), "..", ".."))
 SCRATCH = os.environ.get("SCRATCH", "/tmp/argus-python-tests")
 EMULATED = os.path.join(SOURCE, "scenarios", "penn_station_emulated.yaml")
-PIXELS = os.path.join(SOURCE, "scenarios", "penn_station.yaml")
 MINIMAL = os.path.join(SOURCE, "scenarios", "minimal.yaml")
 
 
