@@ -588,6 +588,66 @@ class stepper {
     return v;
   }
 
+  /// The heading (index into `directions`, the first being the way itself) whose free path
+  /// `free_m` (from others; cut here where walls stand in a turned heading: the way itself
+  /// follows the distance field, which keeps off walls) brings one nearest the goal after the
+  /// look-ahead H: the least H^2 + f^2 - 2 H f cos(turn) (Moussaid et al. 2011's distance to
+  /// the destination). Ties keep the earlier heading.
+  template <std::size_t N>
+  std::size_t choose_heading(const std::array<vec2, N>& directions, std::array<double, N>& free_m,
+                             std::size_t count) const {
+    if (count <= 1) return 0;
+    std::array<double, N>& path = free_m;
+    const double radius = s_.radius_m();
+    for (const auto index : where_.segments_near(s_.position)) {
+      const segment& wall = where_.segments()[index];
+      for (std::size_t k = 1; k < count; ++k) {
+        if (path[k] < settings_.turn_min_free_m) continue;
+        path[k] = std::min(path[k], wall_free_path(wall, s_.position, directions[k], radius));
+      }
+    }
+    const double h = settings_.look_ahead_m;
+    std::size_t best = 0;
+    double best_score = std::numeric_limits<double>::infinity();
+    for (std::size_t k = 0; k < count; ++k) {
+      if (k > 0 && path[k] < settings_.turn_min_free_m) continue;
+      const double cos_turn = directions[k].dot(directions[0]);
+      const double score = h * h + path[k] * path[k] - 2.0 * h * path[k] * cos_turn;
+      if (score < best_score - 1e-12) {
+        best_score = score;
+        best = k;
+      }
+    }
+    return best;
+  }
+
+  /// How far a disc of `radius` at `from` can go along unit `direction` before touching
+  /// `wall` (its line or one of its ends); infinity when never.
+  static double wall_free_path(const segment& wall, const vec2& from, const vec2& direction,
+                               double radius) {
+    double path = std::numeric_limits<double>::infinity();
+    for (const vec2& end : {wall.a, wall.b}) {
+      const vec2 offset = end - from;
+      const double ahead = offset.dot(direction);
+      const double aside = std::abs(offset.x() * direction.y() - offset.y() * direction.x());
+      if (ahead > 0.0 && aside < radius) {
+        path = std::min(path, std::max(ahead - std::sqrt(radius * radius - aside * aside), 0.0));
+      }
+    }
+    const vec2 along = wall.b - wall.a;
+    const double denominator = direction.x() * along.y() - direction.y() * along.x();
+    if (std::abs(denominator) < 1e-12) return path;
+    const vec2 to_a = wall.a - from;
+    const double t = (to_a.x() * along.y() - to_a.y() * along.x()) / denominator;
+    const double u = (to_a.x() * direction.y() - to_a.y() * direction.x()) / denominator;
+    if (t > 0.0 && u >= 0.0 && u <= 1.0) {
+      // The disc touches the line where its centre is `radius` from it.
+      const double sine = std::abs(denominator) / along.norm();
+      path = std::min(path, std::max(t - radius / sine, 0.0));
+    }
+    return path;
+  }
+
   /// Social force plus constraints, integrated over one tick (semi-implicit Euler).
   void move() {
     const double dt = settings_.tick_s;
@@ -629,20 +689,69 @@ class stepper {
     bool yield = false;
     const bool stuck = wants_to_walk && self_.blocked_s > settings_.yield_after_s;
     vec2 repulsion = vec2::Zero();
-    double nearest_ahead_m = std::numeric_limits<double>::infinity();
     vec2 sidestep = vec2::Zero();
     const double social_cutoff_m = settings_.social_cutoff_ranges * settings_.social_range_m;
     double room_m = std::numeric_limits<double>::infinity();
     const double near_gap_m = std::max(social_cutoff_m, 0.6) + 1e-6;
+    // Headings: the way itself and, for someone who wants to walk, the way turned by up to
+    // 45 degrees to either side; each with its free path (before touching someone in it, up to
+    // the look-ahead). One walks the heading that brings one nearest the goal after the
+    // look-ahead (Moussaid, Helbing & Theraulaz 2011), so walkers fan out around a slower one
+    // into the room beside it instead of queueing behind it.
+    constexpr std::size_t turns = 7;
+    constexpr std::array<double, turns> turn_cos{1.0,
+                                                 0.9659258262890683,
+                                                 0.9659258262890683,
+                                                 0.8660254037844387,
+                                                 0.8660254037844387,
+                                                 0.7071067811865476,
+                                                 0.7071067811865476};
+    constexpr std::array<double, turns> turn_sin{
+        0.0,  0.25881904510252074, -0.25881904510252074, 0.5,
+        -0.5, 0.7071067811865476,  -0.7071067811865476};
+    // Walking slowly in a press, people turn their shoulders and fit beside the one ahead;
+    // at speed the one ahead holds back whoever overlaps them by more.
+    const double lane_fraction =
+        settings_.headway_lane_slow +
+        (settings_.headway_lane - settings_.headway_lane_slow) *
+            std::min(1.0, s_.velocity.norm() / settings_.headway_lane_speed_mps);
+    // The free path along unit `direction` to someone at `offset` with body contact `contact`
+    // (infinite unless their centre lies ahead within the lane), or `shortest` when shorter.
+    const auto free_path = [&](const vec2& offset, double contact, const vec2& direction,
+                               double shortest) {
+      const double ahead = offset.dot(direction);
+      const double aside = std::abs(offset.x() * direction.y() - offset.y() * direction.x());
+      const double lane = lane_fraction * contact;
+      if (!(ahead > 0.0) || !(aside < lane)) return shortest;
+      return std::min(shortest,
+                      std::max(ahead - std::sqrt(contact * contact - aside * aside), 0.0));
+    };
+    const std::size_t headings = wants_to_walk ? turns : 1;
+    std::array<vec2, turns> heading_directions;
+    std::array<double, turns> free_path_m;
+    for (std::size_t k = 0; k < headings; ++k) {
+      heading_directions[k] = {
+          turn_cos[k] * desired_direction.x() - turn_sin[k] * desired_direction.y(),
+          turn_sin[k] * desired_direction.x() + turn_cos[k] * desired_direction.y()};
+      free_path_m[k] = settings_.look_ahead_m;
+    }
     // Who can change this step, sifted before the visit without a branch: someone near
     // (the repulsion, the constraints, the arch test), or someone farther in the lane ahead
-    // who is close enough for the headway to slow us or coming the other way (the side step).
+    // within the look-ahead (the way's free path) or coming the other way (the side step).
     // Everyone else would only lose a comparison below, so leaving them out changes no result.
     // The tests repeat the visit's own arithmetic; the margins only widen them. The distance
-    // floor leaves out the walker itself.
+    // floor leaves out the walker itself. The turned headings' free paths, needed only when
+    // the way's is short, take a second look below.
     constexpr double reach_squared = snapshot::neighbour_cell_m * snapshot::neighbour_cell_m;
-    const double headway_reach_m = settings_.headway_s * v0 + 1e-6;
+    constexpr double sqrt_two = 1.4142135623730951 + 1e-9;
+    const double look_m = settings_.look_ahead_m + 1e-6;
     const double lane_margin_m = settings_.sidestep_margin_m + 1e-9;
+    const bool turning = headings > 1;
+    // Who may stand in a turned heading's way (kept during the visit, weighed after it only
+    // when the way's own free path is short). A cone 2.9 m long holds about 40 people at
+    // 6 /m^2; past the capacity the last visited are left out, the same ones every run.
+    std::array<std::pair<vec2, double>, 96> in_turned_lanes;
+    std::size_t in_turned_count = 0;
     const auto matters = [&](const neighbour& other) {
       const vec2 offset = other.position - s_.position;
       const double distance_squared = offset.squaredNorm();
@@ -654,9 +763,15 @@ class stepper {
       const bool in_reach = !(distance_squared > reach_squared) & !(distance_squared < 1e-18);
       const bool near = distance_squared < near_m * near_m;
       const bool in_lane = (along > 0.0) & (across < contact + lane_margin_m);
-      const bool slows = along - contact < headway_reach_m;
+      const bool slows = along - contact < look_m;
       const bool oncoming = other.velocity.dot(desired_direction) < -0.1 + 1e-9;
-      return in_reach & (near | (in_lane & (slows | oncoming)));
+      // In a turned heading's lane (within 45 degrees of the way, widened by contact across
+      // the outermost heading) and near enough to shorten its free path below the look-ahead
+      // (a free path is at least the distance less two contacts).
+      const double view_m = look_m + 2.0 * contact;
+      const bool in_cone =
+          turning & (along > across - sqrt_two * contact) & (distance_squared < view_m * view_m);
+      return in_reach & (near | in_cone | (in_lane & (slows | oncoming)));
     };
     previous_.for_each_near_where(s_.position, matters, [&](const neighbour& other) {
       const vec2 offset = other.position - s_.position;
@@ -690,15 +805,15 @@ class stepper {
           (other.distance_to_goal_m > s_.distance_to_goal_m ||
            (other.distance_to_goal_m == s_.distance_to_goal_m && other.id > s_.id));
       if (!same_line && !behind_me) {
-        // Headway: the free path along the way ahead before touching someone in it.
+        // Headway: the free path along the way before touching someone in it.
+        free_path_m[0] = free_path(offset, contact, heading_directions[0], free_path_m[0]);
+        if (turning && in_turned_count < in_turned_lanes.size()) {
+          in_turned_lanes[in_turned_count++] = {offset, contact};
+        }
         const double along = offset.dot(desired_direction);
         if (along > 0.0) {
           const double across =
               std::abs(offset.x() * desired_direction.y() - offset.y() * desired_direction.x());
-          if (across < contact) {
-            const double free_path = along - std::sqrt(contact * contact - across * across);
-            nearest_ahead_m = std::min(nearest_ahead_m, std::max(free_path, 0.0));
-          }
           // Someone bound elsewhere coming the other way in one's path (not a neighbour in a
           // jam stepping back): step aside early, away from them and, head on, to the right
           // (everyone the same side, so opposing streams form lanes instead of meeting face
@@ -728,14 +843,43 @@ class stepper {
         if (plane_count < planes.size()) planes[plane_count++] = {n, room};
       }
     });
+    const double way_free_m = free_path_m[0];
+    // A turned heading scores at least H^2 sin^2(15 deg) (at f = H cos(turn)), the way itself
+    // (H - f)^2: with the way's free path beyond H (1 - sin 15 deg) no turn can win, and
+    // the others' free paths need not be looked for.
+    const bool may_turn = headings > 1 && way_free_m < settings_.look_ahead_m * (1.0 - turn_sin[1]);
+    if (may_turn) {
+      // Only what can change the choice is worked out: a heading whose best score (H^2
+      // sin^2(turn)) cannot beat the way's, or whose free path is already under the least a
+      // turn needs, is out (its path left at 0).
+      const double h = settings_.look_ahead_m;
+      const double way_score = (h - way_free_m) * (h - way_free_m);
+      for (std::size_t k = 1; k < headings; ++k) {
+        if (h * h * turn_sin[k] * turn_sin[k] >= way_score) {
+          free_path_m[k] = 0.0;
+          continue;
+        }
+        for (std::size_t i = 0; i < in_turned_count; ++i) {
+          const auto& [offset, contact] = in_turned_lanes[i];
+          free_path_m[k] = free_path(offset, contact, heading_directions[k], free_path_m[k]);
+          if (free_path_m[k] < settings_.turn_min_free_m) break;
+        }
+      }
+    }
+    const std::size_t chosen =
+        may_turn ? choose_heading(heading_directions, free_path_m, headings) : 0;
+    desired = heading_directions[chosen] * desired_speed;
     if (sidestep.squaredNorm() > 0.0) {
       const double speed = desired.norm();
       const vec2 turned =
-          desired_direction + sidestep.normalized() * std::min(1.0, sidestep.norm());
+          heading_directions[chosen] + sidestep.normalized() * std::min(1.0, sidestep.norm());
       desired = turned.normalized() * speed;
     }
-    if (std::isfinite(nearest_ahead_m)) {
-      desired *= std::min(1.0, nearest_ahead_m / (settings_.headway_s * v0));
+    // The way itself follows the walls already (the distance field); along it only people
+    // slow one. A turned heading may run into a wall: there its free path counts them too.
+    const double free_m = chosen == 0 ? way_free_m : free_path_m[chosen];
+    if (free_m < settings_.look_ahead_m) {
+      desired *= std::min(1.0, free_m / (settings_.headway_s * v0));
     }
     // Yielding: step back a little, deaf to the crowd's push. Merely standing, the yielder
     // stays wedged: the repulsion of those behind presses it into the arch (two walkers side

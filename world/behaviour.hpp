@@ -48,8 +48,31 @@ struct behaviour_settings {
   double wall_range_m = 0.2;
   /// Time gap kept to the pedestrian ahead: the desired speed is at most the free path ahead
   /// (before touching someone in one's way) over this time, the collision-free speed model's
-  /// V(s) = min(v0, s / T) (Tordeux, Chraibi & Seyfried 2016, as JuPedSim uses it).
-  double headway_s = 0.1;
+  /// V(s) = min(v0, s / T) (Tordeux, Chraibi & Seyfried 2016, as JuPedSim uses it). In single
+  /// file it gives the headway d = contact + T v; Seyfried et al. 2005 measured
+  /// d = 0.36 m + 1.06 s v. Chosen with the lane below on bench/steady_flow's seed 1
+  /// (bench/RESULTS.md has them on held-out seeds): 0.1 s, the value until issue 49,
+  /// let dense streams walk near free speed (2.6 /(m s) at 3.3 /m^2).
+  double headway_s = 0.85;
+  /// Who counts as in one's way for the headway: someone whose centre lies within a fraction
+  /// of body contact across one's heading (the free path is still measured to their whole
+  /// body). The fraction is `headway_lane_slow` standing and grows linearly to `headway_lane`
+  /// at `headway_lane_speed_mps`: slow in a press, people turn their shoulders and fit beside
+  /// the one ahead; at speed whoever overlaps one's path holds one back. Chosen on
+  /// bench/steady_flow's seed 1 (bench/RESULTS.md): with 0.6 at every speed a stream's core at
+  /// 2.5 /m^2 walked 0.3 m/s over Weidmann's speed and bottlenecks under 1.6 m passed
+  /// 1.0-1.1 /(m s), under the published 1.2-1.9; with the whole contact at speed (1.0)
+  /// streams under 1 /m^2 walked 0.18 m/s under it.
+  double headway_lane = 0.9;
+  double headway_lane_slow = 0.3;
+  double headway_lane_speed_mps = 1.0;
+  /// How far ahead a walker looks, for the headway and for the heading to take (see
+  /// step_pedestrian): within the neighbour index's reach (snapshot::neighbour_cell_m), and
+  /// farther than headway_s times the fastest preferred speed, or the fastest never slow.
+  double look_ahead_m = 2.0;
+  /// A turned heading is taken only with at least this free path along it: sliding into a
+  /// narrower gap is no way around anyone, and in a jam it turns the push away from the exit.
+  double turn_min_free_m = 0.5;
   /// Someone coming the other way within this distance ahead, and within body contact plus
   /// the margin across one's path, makes one step aside (to the right when head on).
   double sidestep_horizon_m = 2.0;
@@ -106,6 +129,13 @@ pedestrian make_flow_pedestrian(int id, std::uint64_t run_seed, const vec2& posi
 /// one's way) over the headway time T, V(s) = min(v0, s / T) (the collision-free speed
 /// model, Tordeux et al. 2016), so walkers slow smoothly as the gaps close and stand at
 /// contact, the jam density.
+///
+/// Heading: a walker weighs the way itself and the way turned by 15, 30 and 45 degrees to
+/// either side, each with its free path within the look-ahead H (people whose centre lies
+/// within headway_lane of contact across it; walls, for the turned ones), and walks the one
+/// that brings it nearest the goal after H: the least H^2 + f^2 - 2 H f cos(turn) (Moussaid,
+/// Helbing & Theraulaz 2011). So a stream fans out around a slower walker into the room
+/// beside it; at a free path s along the chosen heading the speed is V(s) above.
 ///
 /// Non-penetration: each neighbour j at gap g adds the half-plane v.n <= (g / 2 - d) / dt
 /// (each of the pair takes at most half the gap, less what its own radius grows by, d; v = 0

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 #include <opencv2/imgproc.hpp>
+#include <optional>
 #include <vector>
 
 #include "world/snapshot.hpp"
@@ -75,7 +76,8 @@ box grown(const box& b, double by_m) {
 }  // namespace
 
 voronoi_measurement measure_area_voronoi(const snapshot& frame, const box& area,
-                                         double cut_off_radius_m) {
+                                         double cut_off_radius_m,
+                                         const std::optional<box>& within) {
   voronoi_measurement out;
   const vec2 size = area.max - area.min;
   const double area_m2 = size.x() * size.y();
@@ -133,6 +135,13 @@ voronoi_measurement measure_area_voronoi(const snapshot& frame, const box& area,
                          {area.max.x() - origin.x(), area.min.y() - origin.y()},
                          area.max - origin,
                          {area.min.x() - origin.x(), area.max.y() - origin.y()}};
+  polygon walkable;
+  if (within) {
+    walkable = {within->min - origin,
+                {within->max.x() - origin.x(), within->min.y() - origin.y()},
+                within->max - origin,
+                {within->min.x() - origin.x(), within->max.y() - origin.y()}};
+  }
   double density_sum = 0.0;
   double speed_sum = 0.0;
   double covered_m2 = 0.0;
@@ -140,7 +149,8 @@ voronoi_measurement measure_area_voronoi(const snapshot& frame, const box& area,
     const auto& group = members[static_cast<std::size_t>(vertices[k])];
     polygon facet;
     for (const auto& corner : facets[k]) facet.push_back({corner.x, corner.y});
-    const polygon cell = clip(std::move(facet), cut_off_polygon(seeds[group.front()], r));
+    polygon cell = clip(std::move(facet), cut_off_polygon(seeds[group.front()], r));
+    if (within) cell = clip(std::move(cell), walkable);
     const double cell_m2 = area_of(cell);
     if (cell_m2 <= 0.0) continue;
     const double inside_m2 = area_of(clip(cell, measured));

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <optional>
+
 #include "world/layout.hpp"
 
 namespace argus::world {
@@ -34,11 +36,16 @@ inline constexpr double voronoi_cut_off_m = 1.0;
 /// (cv::Subdiv2D) and are cut by a regular 20-gon inscribed in the circle of radius
 /// `cut_off_radius_m`, as jpsreport's cut_by_circle approximates the circle. The layout's
 /// walls are not used: a cell is not clipped where a wall runs through it; it is the cut-off
-/// that bounds a cell where nobody else is, next to a wall as in open space. People standing
+/// that bounds a cell where nobody else is, next to a wall as in open space. Given `within`
+/// (the walkable rectangle, such as a corridor between its walls), every cell is also cut to
+/// it, as jpsreport cuts cells by the geometry: in a corridor 1.8 m wide a cell that reaches
+/// past a wall otherwise counts floor nobody can stand on, and the density comes out about a
+/// quarter low. People standing
 /// at one point (within float precision) share that point's cell in equal parts. Zeros when
 /// nobody is within the cut-off of `area`, for a box without area and for a radius <= 0.
 /// Deterministic: the same snapshot gives the same numbers.
 voronoi_measurement measure_area_voronoi(const snapshot& frame, const box& area,
-                                         double cut_off_radius_m = voronoi_cut_off_m);
+                                         double cut_off_radius_m = voronoi_cut_off_m,
+                                         const std::optional<box>& within = std::nullopt);
 
 }  // namespace argus::world

@@ -131,6 +131,24 @@ TEST(voronoi_measurement, single_file_cells_are_strips) {
   EXPECT_NEAR(m.density_per_m2, 8.0 / 8.0, 1e-6);
 }
 
+TEST(voronoi_measurement, cells_are_cut_at_the_walls_given) {
+  // Two files 0.5 m apart on y = 5.75 and 6.25 in a corridor 1 m wide (y = 5.5 to 6.5), 0.5 m
+  // apart along it: 4 /m^2. Uncut, each file's cells reach past its wall to the cut-off, nearly
+  // 1 m: the area, the corridor's width, holds under half of each cell.
+  std::vector<pedestrian_state> people;
+  int id = 1;
+  for (int k = 0; k <= 16; ++k) {
+    for (const double y : {5.75, 6.25}) people.push_back(walker(id++, {2.25 + 0.5 * k, y}));
+  }
+  const box area{{4.0, 5.5}, {8.0, 6.5}};
+  const box corridor{{0.0, 5.5}, {12.0, 6.5}};
+  const auto uncut = measure_area_voronoi(frame_of(people), area);
+  EXPECT_LT(uncut.density_per_m2, 2.0);
+  const auto cut = measure_area_voronoi(frame_of(people), area, voronoi_cut_off_m, corridor);
+  EXPECT_NEAR(cut.density_per_m2, 4.0, 1e-6);
+  EXPECT_NEAR(cut.speed_mps, 1.2, 1e-9);
+}
+
 TEST(voronoi_measurement, cells_of_a_dense_crowd_tile_the_area) {
   // A 0.5 m lattice with every person moved by up to 0.15 m: everyone's cell is under the
   // cut-off, nearly every four stand nearly on a circle, and the cells cover the area
