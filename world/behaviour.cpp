@@ -589,15 +589,14 @@ class stepper {
   }
 
   /// The heading (index into `directions`, the first being the way itself) whose free path
-  /// `free_m` (from others; cut here where walls stand in a turned heading: the way itself
+  /// `path` (from others; cut here where walls stand in a turned heading: the way itself
   /// follows the distance field, which keeps off walls) brings one nearest the goal after the
   /// look-ahead H: the least H^2 + f^2 - 2 H f cos(turn) (Moussaid et al. 2011's distance to
   /// the destination). Ties keep the earlier heading.
   template <std::size_t N>
-  std::size_t choose_heading(const std::array<vec2, N>& directions, std::array<double, N>& free_m,
+  std::size_t choose_heading(const std::array<vec2, N>& directions, std::array<double, N>& path,
                              std::size_t count) const {
     if (count <= 1) return 0;
-    std::array<double, N>& path = free_m;
     const double radius = s_.radius_m();
     for (const auto index : where_.segments_near(s_.position)) {
       const segment& wall = where_.segments()[index];
@@ -750,7 +749,12 @@ class stepper {
     // Who may stand in a turned heading's way (kept during the visit, weighed after it only
     // when the way's own free path is short). A cone 2.9 m long holds about 40 people at
     // 6 /m^2; past the capacity the last visited are left out, the same ones every run.
-    std::array<std::pair<vec2, double>, 96> in_turned_lanes;
+    // A plain struct, not std::pair: the array is left unfilled instead of zeroed every step.
+    struct lane_entry {
+      vec2 offset;
+      double contact;
+    };
+    std::array<lane_entry, 96> in_turned_lanes;
     std::size_t in_turned_count = 0;
     const auto matters = [&](const neighbour& other) {
       const vec2 offset = other.position - s_.position;

@@ -59,17 +59,18 @@ inline constexpr double corridor_area_to_m = 16.0;
 inline layout stationary_corridor_layout(double width_m, double exit_width_m) {
   const double low = corridor_axis_m - width_m / 2.0;
   const double high = corridor_axis_m + width_m / 2.0;
+  const bool open = exit_width_m >= width_m - 1e-9;
+  // Under 0.9 m no navigation cell would be free on y = 6; centre the exit on 6.25.
+  const double centre = open || exit_width_m >= 0.9 ? corridor_axis_m : corridor_axis_m + 0.25;
+  const double exit_low = open ? low : centre - exit_width_m / 2.0;
+  const double exit_high = open ? high : centre + exit_width_m / 2.0;
   layout plan;
   plan.name = "stationary_corridor";
   plan.size_m = {corridor_end_m + 2.0, 12.0};
-  if (exit_width_m >= width_m - 1e-9) {
+  if (open) {
     plan.walls.push_back(
         {{{corridor_end_m + 1.0, low}, {1, low}, {1, high}, {corridor_end_m + 1.0, high}}});
   } else {
-    // Under 0.9 m no navigation cell would be free on y = 6; centre the exit on 6.25.
-    const double centre = exit_width_m < 0.9 ? corridor_axis_m + 0.25 : corridor_axis_m;
-    const double exit_low = centre - exit_width_m / 2.0;
-    const double exit_high = centre + exit_width_m / 2.0;
     plan.walls.push_back({{{corridor_end_m, exit_low},
                            {corridor_end_m, low},
                            {1, low},
@@ -81,10 +82,6 @@ inline layout stationary_corridor_layout(double width_m, double exit_width_m) {
                            {corridor_end_m + 1.0, exit_high},
                            {corridor_end_m, exit_high}}});
   }
-  const bool open = exit_width_m >= width_m - 1e-9;
-  const double centre = open || exit_width_m >= 0.9 ? corridor_axis_m : corridor_axis_m + 0.25;
-  const double exit_low = open ? low : centre - exit_width_m / 2.0;
-  const double exit_high = open ? high : centre + exit_width_m / 2.0;
   plan.regions.push_back({"corridor", region_kind::other, {{1, low}, {corridor_end_m, high}}});
   plan.regions.push_back({"passage",
                           region_kind::other,
