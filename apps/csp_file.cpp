@@ -44,7 +44,9 @@ class checker {
 
   void only_keys(const json& object, const std::string& field,
                  std::initializer_list<const char*> keys) const {
-    for (const auto& [key, value] : object.items()) {
+    for (const auto& item : object.items()) {
+      // A plain reference: clang before 16 cannot capture a structured binding.
+      const auto& key = item.key();
       if (std::none_of(keys.begin(), keys.end(), [&](const char* k) { return key == k; }))
         fail(field.empty() ? key : field + "." + key,
              fmt::format("unknown key; expected one of: {}", fmt::join(keys, ", ")));
@@ -109,7 +111,8 @@ named_csp parse_csp(const std::string& text, const std::string& path) {
   json document;
   try {
     document = json::parse(text);
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception& e) {
+    // parse_error, and out_of_range for a number beyond a double's range (`1e3000`).
     check.fail("", fmt::format("not valid JSON: {}", e.what()));
   }
   if (!document.is_object())

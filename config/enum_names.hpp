@@ -43,9 +43,10 @@ struct enum_names<dropout_kind> {
 /// Names for the `solver` of the controller.
 template <>
 struct enum_names<conflict_solver> {
-  static constexpr std::array<enum_entry<conflict_solver>, 3> entries{{
+  static constexpr std::array<enum_entry<conflict_solver>, 4> entries{{
       {conflict_solver::best_solv, "best_solv"},
       {conflict_solver::all_solv, "all_solv"},
+      {conflict_solver::optimistic_solv, "optimistic_solv"},
       {conflict_solver::bound_solv, "bound_solv"},
   }};
 };

@@ -193,9 +193,10 @@ struct network_settings {
 };
 
 /// Which CSP solver settles group-group conflicts (Section IV-B, Table 1): the paper's
-/// BestSolv (default) and AllSolv, and bound_solv, a branch and bound with a tighter bound
-/// and search ordering that returns the same answer (protocol/csp.hpp).
-enum class conflict_solver { best_solv, all_solv, bound_solv };
+/// BestSolv and AllSolv; optimistic_solv (default), BestSolv with a sound bound, which always
+/// finds the optimum where the paper's rule can miss it; and bound_solv, a branch and bound
+/// with a tighter bound and search ordering that returns the same answer (protocol/csp.hpp).
+enum class conflict_solver { best_solv, all_solv, optimistic_solv, bound_solv };
 
 /// How two leaders of one task merge their groups (Section IV-C): the one with the higher
 /// unique id stays leader, or Fig. 15's negotiation (demote / demoteack / demotenack /
@@ -320,7 +321,7 @@ struct controller_settings {
   double relevance_sigma_fov_deg = 5.0;
   double relevance_sigma_pan_deg = 5.0;
   double relevance_sigma_tilt_deg = 5.0;
-  conflict_solver solver = conflict_solver::best_solv;
+  conflict_solver solver = conflict_solver::optimistic_solv;
   merge_rule merge = merge_rule::highest_id;
   /// Who decides what each camera does (controller/strategy.hpp, docs/strategies.md): a
   /// registered strategy's name — `paper` (the paper's protocol: auctions, groups, handoffs,

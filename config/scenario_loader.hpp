@@ -43,7 +43,8 @@
 ///              min_task_duration: 1 min, membership_relevance_threshold: 0.1,
 ///              merge_timeout: 5 min, bidding_timeout: 2 min, relevance_sigma_fov_deg: 5,
 ///              relevance_sigma_pan_deg: 5, relevance_sigma_tilt_deg: 5,
-///              solver: best_solv,              # best_solv | all_solv | bound_solv
+///              solver: optimistic_solv,        # optimistic_solv | best_solv | all_solv
+///                                              # | bound_solv
 ///              merge: highest_id,              # highest_id | negotiation
 ///              strategy: paper}                # paper | no_collaboration | oracle
 /// tasks:                       # at required, and one of pedestrian, pixel, first_to_enter

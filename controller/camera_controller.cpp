@@ -887,7 +887,8 @@ void camera_controller::solve_csp(controller_output& out) {
   std::vector<protocol::csp_data> groups{own};
   for (const auto& d : csp_->data) groups.push_back(d);
   const auto built = build_csp(groups, settings_.membership_relevance_threshold);
-  const auto solution = protocol::solve(built.problem, solver_kind(settings_.solver));
+  const auto solution =
+      protocol::solve(built.problem, solver_kind(settings_.solver), run_csp_limits);
   events::task_counts minima;
   for (std::size_t g = 0; g < built.groups.size(); ++g)
     minima.emplace_back(built.groups[g].task, g < solution.minima.size() ? solution.minima[g] : 0u);
@@ -899,7 +900,8 @@ void camera_controller::solve_csp(controller_output& out) {
                                .nodes_explored = solution.nodes_explored,
                                .backtracks = solution.backtracks,
                                .relaxed = solution.relaxed,
-                               .minima = std::move(minima)});
+                               .minima = std::move(minima),
+                               .optimal = solution.proven_optimal});
   for (std::size_t g = 0; g < built.groups.size(); ++g) {
     const auto cameras = built.assigned(solution, g);
     const auto& group = built.groups[g];

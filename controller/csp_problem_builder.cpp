@@ -64,10 +64,12 @@ protocol::csp_solver_kind solver_kind(config::conflict_solver solver) {
       return protocol::csp_solver_kind::all_solv;
     case config::conflict_solver::best_solv:
       return protocol::csp_solver_kind::best_solv;
+    case config::conflict_solver::optimistic_solv:
+      return protocol::csp_solver_kind::optimistic_solv;
     case config::conflict_solver::bound_solv:
       return protocol::csp_solver_kind::bound_solv;
   }
-  return protocol::csp_solver_kind::best_solv;
+  return protocol::csp_solver_kind::optimistic_solv;
 }
 
 }  // namespace argus::controller

@@ -36,6 +36,13 @@ struct built_csp {
 /// relevance to that group's task is at least `threshold`.
 built_csp build_csp(std::vector<protocol::csp_data> groups, double threshold);
 
+/// What a conflict's search may spend in a run: work only, so that the answer is the same on
+/// every machine (a wall-clock budget is not), and small enough that a conflict among many
+/// cameras never holds the clock up (bench/RESULTS.md, "The CSP within a budget"). Past it,
+/// the best assignment found so far is applied and `csp_solved` says `"optimal":false`.
+inline constexpr protocol::csp_limits run_csp_limits{
+    .max_work = 200'000, .max_seconds = 0.0, .max_memory_bytes = std::size_t{64} << 20};
+
 /// The solver a scenario names.
 protocol::csp_solver_kind solver_kind(config::conflict_solver solver);
 

@@ -283,11 +283,13 @@ struct csp_solved {
   std::uint64_t nodes_explored = 0, backtracks = 0;
   bool relaxed = false;
   task_counts minima;
+  bool optimal = false;
   template <class F>
   void members(F&& f) {
     f("camera", camera), f("task", task), f("solver", solver), f("groups", groups),
         f("cameras", cameras), f("weight", weight), f("nodes_explored", nodes_explored),
-        f("backtracks", backtracks), f("relaxed", relaxed), f("minima", minima);
+        f("backtracks", backtracks), f("relaxed", relaxed), f("minima", minima),
+        f("optimal", optimal);
   }
 };
 

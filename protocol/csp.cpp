@@ -1,5 +1,6 @@
 #include "protocol/csp.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -58,15 +59,50 @@ bool lower_one_minimum(std::vector<unsigned>& minima,
 }
 
 csp_search::outcome search(const csp_search::round_problem& round, csp_solver_kind solver) {
+  using csp_search::lexicographic_pruning;
   switch (solver) {
     case csp_solver_kind::all_solv:
-      return csp_search::lexicographic_search(round, false);
+      return csp_search::lexicographic_search(round, lexicographic_pruning::none);
     case csp_solver_kind::best_solv:
-      return csp_search::lexicographic_search(round, true);
+      return csp_search::lexicographic_search(round, lexicographic_pruning::paper);
+    case csp_solver_kind::optimistic_solv:
+      return csp_search::lexicographic_search(round, lexicographic_pruning::optimistic);
     case csp_solver_kind::bound_solv:
       return csp_search::bound_search(round);
   }
   throw std::invalid_argument("csp: unknown solver");
+}
+
+/// The answer of a search stopped before it found any complete assignment (csp.hpp,
+/// "Budgets"): each group in index order takes its most relevant free cameras, up to its
+/// maximum; a group that gets fewer than its minimum has the minimum lowered to what it got.
+void assign_greedily(const csp_problem& problem,
+                     const std::vector<std::vector<std::size_t>>& relevant,
+                     csp_solution& solution) {
+  std::vector<char> taken(problem.camera_count, 0);
+  solution.assignment.assign(problem.groups.size(), {});
+  solution.weight = 0.0;
+  for (std::size_t g = 0; g < problem.groups.size(); ++g) {
+    auto order = relevant[g];
+    const auto& relevance = problem.groups[g].relevance;
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return relevance[a] > relevance[b]; });
+    auto& mine = solution.assignment[g];
+    for (std::size_t c : order) {
+      if (mine.size() >= problem.groups[g].max_cameras) break;
+      if (taken[c]) continue;
+      taken[c] = 1;
+      mine.push_back(c);
+    }
+    std::sort(mine.begin(), mine.end());
+    if (mine.size() < solution.minima[g]) {
+      solution.minima[g] = static_cast<unsigned>(mine.size());
+      solution.relaxed = true;
+    }
+  }
+  for (std::size_t g = 0; g < solution.assignment.size(); ++g)  // the canonical order
+    for (std::size_t c : solution.assignment[g]) solution.weight += problem.groups[g].relevance[c];
+  solution.solved = true;
 }
 
 }  // namespace
@@ -77,26 +113,62 @@ csp_solver_kind solver_kind_of(config::conflict_solver solver) {
       return csp_solver_kind::all_solv;
     case config::conflict_solver::best_solv:
       return csp_solver_kind::best_solv;
+    case config::conflict_solver::optimistic_solv:
+      return csp_solver_kind::optimistic_solv;
     case config::conflict_solver::bound_solv:
       return csp_solver_kind::bound_solv;
   }
   throw std::invalid_argument("csp: unknown conflict_solver");
 }
 
-csp_solution solve(const csp_problem& problem, csp_solver_kind solver) {
+const char* stop_name(csp_stop stop) noexcept {
+  switch (stop) {
+    case csp_stop::none:
+      return "";
+    case csp_stop::work:
+      return "work";
+    case csp_stop::time:
+      return "time";
+    case csp_stop::memory:
+      return "memory";
+  }
+  return "";
+}
+
+csp_solution solve(const csp_problem& problem, csp_solver_kind solver, const csp_limits& limits) {
   validate(problem);
   const auto relevant = csp_search::relevant_cameras(problem);
+  csp_search::search_budget budget(limits);
   csp_solution solution;
   for (const auto& group : problem.groups) solution.minima.push_back(group.min_cameras);
   while (true) {
-    const auto found = search({problem, solution.minima, relevant}, solver);
+    const auto found = search({problem, solution.minima, relevant, budget}, solver);
     solution.nodes_explored += found.nodes_explored;
     solution.backtracks += found.backtracks;
     solution.solutions += found.solutions;
+    solution.stopped_by = budget.reason();
     if (found.found) {
       solution.solved = true;
       solution.assignment = found.best;
       solution.weight = found.weight;
+      solution.complete = !budget.stopped();
+      solution.proven_optimal = solution.complete && is_exact(solver);
+      if (!solution.complete) {
+        // A search cut short may hold little more than its first complete assignment (the
+        // lexicographic ones especially): the greedy one, if it meets the same minima and is
+        // heavier, is the better answer found.
+        csp_solution greedy = solution;
+        greedy.relaxed = false;
+        assign_greedily(problem, relevant, greedy);
+        if (!greedy.relaxed && greedy.weight > solution.weight) {
+          solution.assignment = std::move(greedy.assignment);
+          solution.weight = greedy.weight;
+        }
+      }
+      return solution;
+    }
+    if (budget.stopped()) {  // no answer found in time: not proof that there is none
+      assign_greedily(problem, relevant, solution);
       return solution;
     }
     if (!lower_one_minimum(solution.minima, relevant)) return solution;

@@ -155,11 +155,24 @@ class branch_and_bound {
     const double loose = completion_bound();
     const bool last = depth + 1 == group_count_;
     std::priority_queue<pending_value, std::vector<pending_value>, less_promising> pending;
+    std::size_t held = 0;  // bytes of `values` and `pending` counted in the budget
+    const auto account = [&] {
+      std::size_t now = values.held_bytes();
+      // Reads the queue's entries through its container size only: each holds its cameras.
+      now += pending.size() * (sizeof(pending_value) +
+                               round_.problem.groups[group].max_cameras * sizeof(std::size_t));
+      if (now > held)
+        round_.budget.hold(now - held);
+      else
+        round_.budget.release(held - now);
+      held = now;
+    };
     std::uint64_t generated = 0;
     bool more = values.next();
-    while (true) {
-      while (more &&
+    while (!round_.budget.stopped()) {
+      while (more && pending.size() < max_pending &&
              (pending.empty() || partial + values.weight() + loose >= pending.top().total)) {
+        if (!round_.budget.spend()) break;
         ++result_.backtracks;  // every generated value is taken back (csp.hpp, "Counting")
         const double weight = partial + values.weight();
         if (weight + loose < best_.weight() - prune_margin) {
@@ -175,8 +188,17 @@ class branch_and_bound {
         mark(values.current(), 0);
         more = values.next();
       }
-      // Every value not yet tried, generated or not, has a total no larger than the top's.
-      if (pending.empty() || pending.top().total < best_.weight() - prune_margin) break;
+      account();
+      if (round_.budget.stopped()) break;
+      if (pending.empty()) break;  // nothing generated: no value left, or the rest are hopeless
+      if (pending.top().total < best_.weight() - prune_margin) {
+        // Every value not yet tried, generated or not, has a total no larger than the top's
+        // (the values come heaviest first), unless the queue filled up before the next value
+        // fell below the top: then only the waiting ones are hopeless.
+        if (!more || pending.size() < max_pending) break;
+        pending = {};
+        continue;
+      }
       const pending_value value = pending.top();
       pending.pop();
       ++result_.nodes_explored;
@@ -192,8 +214,12 @@ class branch_and_bound {
       chosen_[group].clear();
       mark(value.cameras, 0);
     }
+    round_.budget.release(held);
     assigned_[group] = 0;
   }
+
+  /// Generated values waiting per group before one is searched (csp.hpp, "Budgets").
+  static constexpr std::size_t max_pending = 4096;
 
   const round_problem& round_;
   const std::size_t group_count_;

@@ -19,13 +19,14 @@ double canonical_weight(const round_problem& round, const assignment& chosen) {
   return weight;
 }
 
-void incumbent::offer(const round_problem& round, const assignment& chosen, double estimate) {
-  if (!may_take(estimate)) return;
+bool incumbent::offer(const round_problem& round, const assignment& chosen, double estimate) {
+  if (!may_take(estimate)) return false;
   const double weight = canonical_weight(round, chosen);
-  if (found_ && (weight < weight_ || (weight == weight_ && !(chosen < best_)))) return;
+  if (found_ && (weight < weight_ || (weight == weight_ && !(chosen < best_)))) return false;
   found_ = true;
   weight_ = weight;
   best_ = chosen;
+  return true;
 }
 
 }  // namespace argus::protocol::csp_search

@@ -3,6 +3,7 @@
 // The searches behind protocol::solve (protocol/csp.hpp), one relaxation round each. Internal
 // to argus_protocol: callers use solve().
 
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -19,12 +20,54 @@ using assignment = std::vector<std::vector<std::size_t>>;
 /// that rounding never drops an exact tie (csp.hpp, "The solvers").
 inline constexpr double prune_margin = 1e-9;
 
+/// What the searches of one solve() have spent against its limits (csp.hpp, "Budgets").
+class search_budget {
+ public:
+  explicit search_budget(const csp_limits& limits)
+      : limits_(limits), start_(std::chrono::steady_clock::now()) {}
+
+  /// Counts one generated value; false once any budget has run out (then for good).
+  bool spend() {
+    if (stopped_ != csp_stop::none) return false;
+    ++work_;
+    if (limits_.max_work != 0 && work_ > limits_.max_work) stopped_ = csp_stop::work;
+    if (limits_.max_seconds > 0.0 && work_ % 1024 == 0 &&
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count() >
+            limits_.max_seconds)
+      stopped_ = csp_stop::time;
+    return stopped_ == csp_stop::none;
+  }
+
+  /// Counts `bytes` more held; false (and stopped) when that passes the memory budget.
+  bool hold(std::size_t bytes) {
+    held_ += bytes;
+    if (limits_.max_memory_bytes != 0 && held_ > limits_.max_memory_bytes &&
+        stopped_ == csp_stop::none)
+      stopped_ = csp_stop::memory;
+    return stopped_ == csp_stop::none;
+  }
+
+  /// Counts `bytes` released.
+  void release(std::size_t bytes) noexcept { held_ -= bytes; }
+
+  bool stopped() const noexcept { return stopped_ != csp_stop::none; }
+  csp_stop reason() const noexcept { return stopped_; }
+
+ private:
+  csp_limits limits_;
+  std::chrono::steady_clock::time_point start_;
+  std::uint64_t work_ = 0;
+  std::size_t held_ = 0;
+  csp_stop stopped_ = csp_stop::none;
+};
+
 /// The problem as the searches see it: the minima in force this round, and each group's
 /// relevant cameras ascending.
 struct round_problem {
   const csp_problem& problem;
   const std::vector<unsigned>& minima;
   const std::vector<std::vector<std::size_t>>& relevant;
+  search_budget& budget;
 
   double relevance(std::size_t group, std::size_t camera) const {
     return problem.groups[group].relevance[camera];
@@ -43,8 +86,9 @@ double canonical_weight(const round_problem& round, const assignment& chosen);
 class incumbent {
  public:
   /// Offers a complete assignment; `estimate` is its weight summed in any order, used only to
-  /// skip the canonical sum for assignments that are clearly lighter.
-  void offer(const round_problem& round, const assignment& chosen, double estimate);
+  /// skip the canonical sum for assignments that are clearly lighter. True when it became the
+  /// best.
+  bool offer(const round_problem& round, const assignment& chosen, double estimate);
 
   /// Whether a complete assignment whose weight, summed in any order, is `estimate` could
   /// replace the best (offer ignores those that cannot).
@@ -98,9 +142,15 @@ outcome search_from_root(const round_problem& round, incumbent& best, outcome& e
   return effort;
 }
 
-/// AllSolv (bounded = false) and BestSolv (bounded = true): groups in index order, values in
-/// lexicographic order.
-outcome lexicographic_search(const round_problem& round, bool bounded);
+/// How a lexicographic search prunes (csp.hpp, "The solvers").
+enum class lexicographic_pruning {
+  none,        // all_solv
+  paper,       // best_solv: poorer than the best taken to the same depth
+  optimistic,  // optimistic_solv: weight plus a static optimistic completion
+};
+
+/// AllSolv, BestSolv and optimistic_solv: groups in index order, values in lexicographic order.
+outcome lexicographic_search(const round_problem& round, lexicographic_pruning pruning);
 
 /// bound_solv: dynamic bound, forward checking, heaviest values first, most constrained
 /// group first.

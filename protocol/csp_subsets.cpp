@@ -23,6 +23,7 @@ heaviest_first_subsets::heaviest_first_subsets(std::vector<std::size_t> cameras,
                                                unsigned max_size)
     : cameras_(std::move(cameras)), weights_(std::move(weights)) {
   const std::size_t largest = std::min<std::size_t>(max_size, cameras_.size());
+  entry_bytes_ = sizeof(candidate) + largest * sizeof(std::size_t);
   for (std::size_t size = min_size; size <= largest; ++size) {
     std::vector<std::size_t> first(size);
     std::iota(first.begin(), first.end(), std::size_t{0});

@@ -100,6 +100,9 @@ class heaviest_first_subsets {
   /// The current subset's weight (summed in position order).
   double weight() const noexcept { return weight_; }
 
+  /// About how many bytes the subsets waiting in the heap hold (for a search's memory budget).
+  std::size_t held_bytes() const noexcept { return heap_.size() * entry_bytes_; }
+
  private:
   struct candidate {
     double weight;
@@ -117,6 +120,7 @@ class heaviest_first_subsets {
   std::priority_queue<candidate, std::vector<candidate>, lighter> heap_;
   std::vector<std::size_t> current_;
   double weight_ = 0.0;
+  std::size_t entry_bytes_ = 0;
 };
 
 }  // namespace argus::protocol

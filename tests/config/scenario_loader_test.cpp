@@ -63,7 +63,7 @@ TEST(scenario_loader, controller_defaults_are_table_2) {
   EXPECT_EQ(controller.relevance_sigma_fov_deg, 5.0);
   EXPECT_EQ(controller.relevance_sigma_pan_deg, 5.0);
   EXPECT_EQ(controller.relevance_sigma_tilt_deg, 5.0);
-  EXPECT_EQ(controller.solver, conflict_solver::best_solv);
+  EXPECT_EQ(controller.solver, conflict_solver::optimistic_solv);
 }
 
 TEST(scenario_loader, fills_defaults_and_names_the_scenario_after_the_file) {

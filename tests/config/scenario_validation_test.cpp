@@ -113,7 +113,8 @@ TEST(scenario_validation, bad_enum_names_the_choices) {
       (problem{"bad.yaml", 4, 11, "cameras[0].type", "expected one of: static, ptz, got 'dome'"}));
   EXPECT_EQ(only_problem("controller: {solver: best_solve}\n"),
             (problem{"bad.yaml", 1, 22, "controller.solver",
-                     "expected one of: best_solv, all_solv, bound_solv, got 'best_solve'; "
+                     "expected one of: best_solv, all_solv, optimistic_solv, bound_solv, got "
+                     "'best_solve'; "
                      "did you mean "
                      "'best_solv'?"}));
   EXPECT_EQ(only_problem("world: {clothing: plain}\n"),

@@ -118,7 +118,7 @@ TEST(scenario_writer, writes_defaults_durations_and_enums_readably) {
   EXPECT_NE(text.find("\n  neighbour_timeout: 5 s\n"), std::string::npos) << text;
   EXPECT_NE(text.find("\n  unicast: flood\n"), std::string::npos) << text;
   EXPECT_NE(text.find("\n  wait_timeout: 2 min\n"), std::string::npos) << text;
-  EXPECT_NE(text.find("\n  solver: best_solv\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("\n  solver: optimistic_solv\n"), std::string::npos) << text;
   EXPECT_NE(text.find("\n  output_dir: \"\"\n"), std::string::npos) << text;
   EXPECT_NE(text.find("\ncameras: []\n"), std::string::npos) << text;
 }

@@ -54,6 +54,8 @@ TEST(csp_problem_builder, pinned_members_and_leaders_never_move) {
 TEST(csp_problem_builder, each_solver_the_scenario_names) {
   EXPECT_EQ(solver_kind(config::conflict_solver::all_solv), protocol::csp_solver_kind::all_solv);
   EXPECT_EQ(solver_kind(config::conflict_solver::best_solv), protocol::csp_solver_kind::best_solv);
+  EXPECT_EQ(solver_kind(config::conflict_solver::optimistic_solv),
+            protocol::csp_solver_kind::optimistic_solv);
   EXPECT_EQ(solver_kind(config::conflict_solver::bound_solv),
             protocol::csp_solver_kind::bound_solv);
 }

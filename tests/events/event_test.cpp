@@ -51,7 +51,7 @@ const std::vector<std::string> lines{
     R"LINE({"t":1.000000,"tick":15,"source":"camera/3","kind":"demoteretry","camera":3,"task":1,"to":5})LINE",
     R"LINE({"t":1.000000,"tick":15,"source":"camera/3","kind":"conflict","camera":3,"task":1,"with_tasks":[0],"cameras":[2,4]})LINE",
     R"LINE({"t":1.000000,"tick":15,"source":"camera/3","kind":"csp_yielded","camera":3,"task":1,"to_task":0})LINE",
-    R"LINE({"t":1.000000,"tick":15,"source":"camera/3","kind":"csp_solved","camera":3,"task":1,"solver":"best_solv","groups":2,"cameras":5,"weight":1.2345,"nodes_explored":12,"backtracks":30,"relaxed":false,"minima":{"1":2,"0":1}})LINE",
+    R"LINE({"t":1.000000,"tick":15,"source":"camera/3","kind":"csp_solved","camera":3,"task":1,"solver":"best_solv","groups":2,"cameras":5,"weight":1.2345,"nodes_explored":12,"backtracks":30,"relaxed":false,"minima":{"1":2,"0":1},"optimal":true})LINE",
     R"LINE({"t":1.000000,"tick":15,"source":"camera/3","kind":"csp_applied","camera":3,"task":1,"solver_camera":4,"cameras":[]})LINE",
     R"LINE({"t":1.000000,"tick":15,"source":"camera/3","kind":"render_failed","camera":3,"error_code":7})LINE",
     R"LINE({"t":1.000000,"tick":15,"source":"camera/3","kind":"strategy_failed","camera":3,"error":"ValueError: \"quoted\"\nline"})LINE",
