@@ -222,6 +222,7 @@ void camera_controller::weigh_evidence(pending_query& p, const look_result& r,
   protocol::relevance_bid bid;
   bid.task = p.task.task;
   bid.leader = p.leader;
+  bid.term = p.term;
   bid.auction = p.auction;
   bid.bidder = me_.id;
   bid.relevance = p.relevance;
@@ -247,12 +248,13 @@ void camera_controller::take_query(const operator_query& q, controller_output& o
   if (task_ && task_->task == q.task.task) return;
   if (task_) leave_task("operator", out);
   pending_.clear();
-  start_task(q.task, group_role::leader, me_.id, 0.0, now_, out);
+  start_task(q.task, group_role::leader, me_.id, 0.0, now_, next_term(q.task.task), out);
   seen_relevance_ = relevance_of(q.box, false);
   emit(out, events::task_created{.task = q.task.task,
                                  .min_cameras = q.task.min_cameras,
                                  .max_cameras = q.task.max_cameras,
-                                 .relevance = seen_relevance_});
+                                 .relevance = seen_relevance_,
+                                 .term = term_});
 }
 
 // --- messages --------------------------------------------------------------------------------
@@ -290,9 +292,11 @@ void camera_controller::on_query(int from, const protocol::query_relevance& q,
                                  controller_output& out) {
   const auto t = q.task.task;
   if (cancelled_.count(t) != 0) return;
+  heard_term(t, q.term);
   if (q.relay) {
     // Section IV-A: a leader recruits through its members, who announce to their neighbours.
-    if (task_ && task_->task == t && role_ == group_role::member && leader_ == q.leader) {
+    if (task_ && task_->task == t && role_ == group_role::member && leader_ == q.leader &&
+        q.term >= term_) {
       auto announce = q;
       announce.relay = false;
       send(protocol::broadcast, announce, out);
@@ -300,7 +304,8 @@ void camera_controller::on_query(int from, const protocol::query_relevance& q,
     return;
   }
   if (task_ && task_->task == t) {
-    if (role_ == group_role::leader && q.leader != me_.id) met_other_leader(q.leader, out);
+    if (role_ == group_role::leader && q.leader != me_.id)
+      met_other_leader(q.leader, q.term, q.leader, out);
     return;
   }
   if (q.leader == me_.id) return;
@@ -310,6 +315,7 @@ void camera_controller::on_query(int from, const protocol::query_relevance& q,
     const bool new_auction = pending->leader != q.leader || pending->auction != q.auction;
     if (!pending->bid_sent) {
       pending->leader = q.leader;
+      pending->term = q.term;
       pending->querier = from;
       pending->auction = q.auction;
       return;
@@ -323,6 +329,7 @@ void camera_controller::on_query(int from, const protocol::query_relevance& q,
   pending_query p;
   p.task = q.task;
   p.leader = q.leader;
+  p.term = q.term;
   p.querier = from;
   p.auction = q.auction;
   p.look_until = now_ + ticks(settings_.relevance_look_time);
@@ -348,6 +355,7 @@ void camera_controller::on_bid(int from, const protocol::relevance_bid& b, contr
 
 void camera_controller::on_join(int from, const protocol::join& j, controller_output& out) {
   if (cancelled_.count(j.task.task) != 0) return;
+  heard_term(j.task.task, j.term);
   if (j.invitee != me_.id) {
     // A copy for the member that relayed the invitee's bid, from the leader itself: pass it on.
     if (task_ && task_->task == j.task.task && role_ == group_role::member && leader_ == j.leader &&
@@ -375,9 +383,10 @@ void camera_controller::on_join(int from, const protocol::join& j, controller_ou
   }
   pending_.clear();
   const bool followed = bid_followed_ == j.task.task;
-  start_task(j.task, group_role::member, j.leader, r, seen, out);
+  start_task(j.task, group_role::member, j.leader, r, seen, j.term, out);
   if (followed) fsm_ = bid_fsm_;  // in Track (or Wait) on her already
-  emit(out, events::joined{.task = j.task.task, .leader = j.leader, .reassign = j.reassign});
+  emit(out, events::joined{
+                .task = j.task.task, .leader = j.leader, .reassign = j.reassign, .term = j.term});
   send(protocol::broadcast, own_status(), out);
 }
 
@@ -387,12 +396,18 @@ void camera_controller::on_status(int from, const protocol::status& s, controlle
     send(s.sender, protocol::task_cancel{s.task, me_.id}, out);
     return;
   }
+  heard_term(s.task, s.term);
   if (!task_ || s.task != task_->task || s.sender == me_.id) return;
-  // Statuses from a leader that handed its group over or was taken for failed, or naming it
-  // as their leader, are stale: still in flight, or from nodes that have not noticed yet.
-  // Following them would put the group under a leader that is gone (and, merging by highest
-  // id, keep putting it there).
-  if (retired(s.sender) || retired(s.leader)) return;
+  // Terms: a status of another leadership older than this node's is stale (the leader handed
+  // over or was taken for failed, its statuses still in flight or echoed by nodes that have
+  // not noticed); a leader answers it with its own, so that the sender learns the newer term.
+  // A late copy of its own leader's status from before the leader's newer term is stale too.
+  // Statuses of its own leadership's nodes may lag behind its term: they have not heard it yet.
+  if (s.leader != leader_ && s.term < term_) {
+    if (role_ == group_role::leader) answer_stale(s.sender, out);
+    return;
+  }
+  if (s.sender == leader_ && s.term < term_) return;
   if (role_ == group_role::member && handed_over_at_) {
     // The hand-over is confirmed by the new leader's own status as leader: now leave.
     if (s.sender == leader_ && s.leader == leader_) leave_task("handed_over", out);
@@ -424,9 +439,10 @@ void camera_controller::on_status(int from, const protocol::status& s, controlle
     last_leader_status_ = now_;
     leader_members_ = s.members;
     if (s.leader != s.sender) {
-      follow_leader(s.leader, "leader_demoted", out);
+      follow_leader(s.leader, s.term, "leader_demoted", out);
       return;
     }
+    term_ = s.term;  // its leader's newer epoch (a merge it won), or the same
     const bool listed = std::find(s.members.begin(), s.members.end(), me_.id) != s.members.end();
     if (!listed && now_ - joined_ > ticks(settings_.leader_failure_timeout))
       leave_task("dropped", out);
@@ -450,57 +466,85 @@ void camera_controller::on_status(int from, const protocol::status& s, controlle
     }
     return;
   }
-  met_other_leader(s.leader == s.sender ? s.sender : s.leader, out);
+  met_other_leader(s.leader, s.term, s.sender, out);
 }
 
 void camera_controller::on_handover(const protocol::handover& h, controller_output& out) {
-  // Its statuses still in flight would read as another leader's: ignore them for a while.
-  retired_[h.old_leader] = now_;
-  if (!task_ && h.new_leader == me_.id) {
+  heard_term(h.task.task, h.term);
+  if (!task_ && h.new_leader == me_.id && cancelled_.count(h.task.task) == 0) {
     // Left the group while the hand-over was on its way: the task must not die with it.
-    start_task(h.task, group_role::member, h.old_leader, 0.0, now_, out);
-    emit(out, events::joined{.task = h.task.task, .leader = h.old_leader, .reassign = false});
+    start_task(h.task, group_role::member, h.old_leader, 0.0, now_, h.term - 1, out);
+    emit(out, events::joined{
+                  .task = h.task.task, .leader = h.old_leader, .reassign = false, .term = term_});
   }
-  // The new leader takes over even if it missed an earlier hand-over and follows someone else.
-  if (!task_ || role_ != group_role::member || task_->task != h.task.task ||
+  // Terms: a hand-over no newer than the leadership followed is stale (an earlier one, late).
+  // The new leader takes over whatever leadership it follows; the others only from the old
+  // leader they follow.
+  if (!task_ || role_ != group_role::member || task_->task != h.task.task || h.term <= term_ ||
       (leader_ != h.old_leader && h.new_leader != me_.id))
     return;
   if (h.new_leader != me_.id) {
     leader_ = h.new_leader;
+    term_ = h.term;
     last_leader_status_ = now_;
     return;
   }
-  become_leader("handover", out);
+  become_leader("handover", out, h.term);
   for (int m : h.members)
     if (m != me_.id) members_[m] = member_record{0.0, now_, now_};
 }
 
 void camera_controller::on_demotion(const protocol::demotion& d, controller_output& out) {
+  heard_term(d.task, d.term);
   if (!task_ || role_ != group_role::leader || d.task != task_->task) {
     // No longer a leader of that task: the negotiation is over for this side.
     if (d.step == protocol::demotion_step::demote)
-      send(d.sender, protocol::demotion{protocol::demotion_step::nack, d.task, me_.id, {}}, out);
+      send(d.sender,
+           protocol::demotion{.step = protocol::demotion_step::nack,
+                              .task = d.task,
+                              .sender = me_.id,
+                              .term = task_ && task_->task == d.task ? term_ : 0,
+                              .members = {}},
+           out);
+    return;
+  }
+  // Terms: Fig. 15 settles leaders of one term; an older leadership learns the newer one, a
+  // newer one is followed.
+  if (d.term < term_) {
+    answer_stale(d.sender, out);
+    return;
+  }
+  if (d.term > term_) {
+    follow_leader(d.sender, d.term, "newer_term", out);
     return;
   }
   demotion_negotiator::actions a;
   negotiator_.receive(d.sender, d.step, now_, a);
-  if (d.step == protocol::demotion_step::ack)
+  if (d.step == protocol::demotion_step::ack) {
     for (int m : d.members)
       if (m != me_.id) absorb(m, out);
-  apply_demotions(a, out);
+    // Absorbing a demoted leader starts a new term: its members, who knew its term, now hear
+    // a newer one.
+    term_ = next_term(task_->task);
+    heard_term(task_->task, term_);
+    send(protocol::broadcast, own_status(), out);
+  }
+  apply_demotions(a, out, d.term);
 }
 
 void camera_controller::apply_demotions(const demotion_negotiator::actions& a,
-                                        controller_output& out) {
+                                        controller_output& out,
+                                        std::optional<protocol::term_epoch> peer_term) {
   for (const auto& [peer, step] : a.sends) {
-    protocol::demotion d{step, task_->task, me_.id, {}};
+    protocol::demotion d{
+        .step = step, .task = task_->task, .sender = me_.id, .term = term_, .members = {}};
     if (step == protocol::demotion_step::ack) d.members = members();
     send(peer, d, out);
     emit(out, events::demotion_sent{
                   .task = d.task, .to = peer, .step = std::string(protocol::kind_of(d))});
   }
   for (int peer : a.absorbed) absorb(peer, out);
-  if (a.demoted_to) follow_leader(*a.demoted_to, "demoted", out);
+  if (a.demoted_to) follow_leader(*a.demoted_to, peer_term.value_or(term_), "demoted", out);
 }
 
 void camera_controller::cancel(task_id task, int from, controller_output& out) {
@@ -516,10 +560,12 @@ void camera_controller::cancel(task_id task, int from, controller_output& out) {
 
 void camera_controller::start_task(const protocol::task_description& task, group_role role,
                                    int leader, double relevance, std::int64_t seen,
-                                   controller_output&) {
+                                   protocol::term_epoch term, controller_output&) {
   task_ = task;
   role_ = role;
   leader_ = leader;
+  term_ = term;
+  heard_term(task.task, term);
   joined_ = now_;
   last_leader_status_ = now_;
   seen_relevance_ = relevance;
@@ -546,7 +592,8 @@ void camera_controller::emit_leader_changed(int leader, int previous, std::strin
   emit(out, events::leader_changed{.task = task_->task,
                                    .leader = leader,
                                    .previous = previous,
-                                   .reason = std::string(reason)});
+                                   .reason = std::string(reason),
+                                   .term = term_});
 }
 
 void camera_controller::leave_task(std::string_view reason, controller_output& out) {
@@ -566,20 +613,26 @@ void camera_controller::leave_task(std::string_view reason, controller_output& o
   forget_group();
 }
 
-void camera_controller::become_leader(std::string_view reason, controller_output& out) {
+void camera_controller::become_leader(std::string_view reason, controller_output& out,
+                                      std::optional<protocol::term_epoch> term) {
   const int previous = leader_;
   role_ = group_role::leader;
   leader_ = me_.id;
+  term_ = term.value_or(next_term(task_->task));
+  heard_term(task_->task, term_);
   handed_over_at_.reset();
   forget_group();
   next_auction_at_ = now_;
   emit_leader_changed(me_.id, previous, reason, out);
 }
 
-void camera_controller::follow_leader(int leader, std::string_view reason, controller_output& out) {
+void camera_controller::follow_leader(int leader, protocol::term_epoch term,
+                                      std::string_view reason, controller_output& out) {
   const int previous = leader_;
   role_ = group_role::member;
   leader_ = leader;
+  term_ = term;
+  heard_term(task_->task, term);
   last_leader_status_ = now_;
   leader_members_.reset();
   handed_over_at_.reset();
@@ -589,19 +642,46 @@ void camera_controller::follow_leader(int leader, std::string_view reason, contr
   send(protocol::broadcast, own_status(), out);
 }
 
-bool camera_controller::retired(int leader) {
-  auto r = retired_.find(leader);
-  if (r == retired_.end()) return false;
-  if (now_ - r->second < ticks(settings_.member_failure_timeout)) return true;
-  retired_.erase(r);
-  return false;
+void camera_controller::heard_term(task_id task, protocol::term_epoch term) {
+  auto& newest = epochs_[task];
+  newest = std::max(newest, term);
 }
 
-void camera_controller::met_other_leader(int other, controller_output& out) {
-  if (retired(other)) return;
+protocol::term_epoch camera_controller::next_term(task_id task) const {
+  auto it = epochs_.find(task);
+  const protocol::term_epoch heard = it == epochs_.end() ? 0 : it->second;
+  const protocol::term_epoch own = task_ && task_->task == task ? term_ : 0;
+  return std::max(heard, own) + 1;
+}
+
+void camera_controller::answer_stale(int to, controller_output& out) {
+  auto [it, fresh] = answered_stale_.emplace(to, now_);
+  if (!fresh && now_ - it->second < ticks(settings_.heartbeat_interval)) return;
+  it->second = now_;
+  send(to, own_status(), out);
+}
+
+void camera_controller::met_other_leader(int other, protocol::term_epoch term, int sender,
+                                         controller_output& out) {
+  if (term < term_) {
+    answer_stale(sender, out);
+    return;
+  }
+  if (term > term_) {
+    follow_leader(other, term, "newer_term", out);
+    return;
+  }
+  // Two leaderships of one epoch: the paper's merge rule settles them.
   if (settings_.merge == config::merge_rule::highest_id) {
-    // Section IV-C: among conflicting leaders the one with the highest id stays leader.
-    if (other > me_.id) follow_leader(other, "demoted", out);
+    // Section IV-C: among conflicting leaders the one with the highest id stays leader; the
+    // merge starts a new term, which the other hears as newer.
+    if (other > me_.id) {
+      follow_leader(other, term, "demoted", out);
+    } else {
+      term_ = next_term(task_->task);
+      heard_term(task_->task, term_);
+      send(protocol::broadcast, own_status(), out);
+    }
     return;
   }
   negotiator_.met_leader(other, now_);
@@ -639,7 +719,11 @@ void camera_controller::run_timers(controller_output& out) {
     if (cmd.state != before)
       emit(out, events::tracking{.task = task_->task, .state = std::string(name_of(cmd.state))});
   }
-  if (fsm_.state() == vision::tracking_state::failed && members_.empty()) {
+  if (fsm_.state() == vision::tracking_state::failed && !handed_over_at_) {
+    // Fig. 10: Failed ends the node's part in the task, back to Idle and its default pose. A
+    // leader first gives its group to the member that saw her last, so that the group keeps
+    // looking for her; until the new leader is heard, it waits as after any hand-over.
+    if (role_ == group_role::leader && hand_over(-1.0, out, true)) return;
     leave_task("target_lost", out);
     return;
   }
@@ -661,8 +745,8 @@ void camera_controller::follow(controller_output& out) {
     return;
   }
   if (now_ - last_leader_status_ >= ticks(settings_.leader_failure_timeout)) {
-    // Section IV-C: no status from the leader in time: it is taken as failed.
-    retired_[leader_] = now_;
+    // Section IV-C: no status from the leader in time: it is taken as failed, and this node
+    // leads at a new term, so that the failed leader's statuses, if it comes back, are stale.
     become_leader("leader_failed", out);
     lead(out);
     return;
@@ -719,16 +803,22 @@ void camera_controller::lead(controller_output& out) {
   }
 }
 
-bool camera_controller::hand_over(double mine, controller_output& out) {
+bool camera_controller::hand_over(double mine, controller_output& out, bool to_anyone) {
   // Section IV-A: a leader below the threshold selects a new leader among its members; only one
-  // that still sees the target better, else this leader keeps the group and searches.
+  // that still sees the target better, else this leader keeps the group and searches. A leader
+  // whose search failed gives it to its best member whatever that member's relevance.
   auto best = members_.end();
   for (auto it = members_.begin(); it != members_.end(); ++it)
     if (best == members_.end() || it->second.relevance > best->second.relevance) best = it;
-  if (best == members_.end() || best->second.relevance < settings_.membership_relevance_threshold ||
-      best->second.relevance <= mine)
+  if (best == members_.end()) return false;
+  if (!to_anyone && (best->second.relevance < settings_.membership_relevance_threshold ||
+                     best->second.relevance <= mine))
     return false;
-  protocol::handover h{*task_, me_.id, best->first, members()};
+  const protocol::handover h{.task = *task_,
+                             .old_leader = me_.id,
+                             .new_leader = best->first,
+                             .term = next_term(task_->task),
+                             .members = members()};
   for (const auto& [m, rec] : members_) send(m, h, out);
   emit(out, events::handoff{.task = task_->task,
                             .from = me_.id,
@@ -739,6 +829,8 @@ bool camera_controller::hand_over(double mine, controller_output& out) {
   // (No leader_changed here: the new leader logs the change when it takes the group.)
   role_ = group_role::member;
   leader_ = best->first;
+  term_ = h.term;
+  heard_term(task_->task, term_);
   last_leader_status_ = now_;
   leader_members_.reset();
   forget_group();
@@ -752,7 +844,8 @@ void camera_controller::open_auction(controller_output& out) {
   auction_state a;
   a.id = next_auction_id_++;
   a.closes_at = now_ + ticks(settings_.auction_window);
-  protocol::query_relevance q{*task_, me_.id, a.id, false};
+  protocol::query_relevance q{
+      .task = *task_, .leader = me_.id, .term = term_, .auction = a.id, .relay = false};
   send(protocol::broadcast, q, out);
   q.relay = true;
   for (const auto& [m, rec] : members_) send(m, q, out);
@@ -799,7 +892,8 @@ void camera_controller::close_auction(controller_output& out) {
 }
 
 void camera_controller::invite(int camera, bool reassign, controller_output& out) {
-  const protocol::join j{*task_, me_.id, camera, reassign};
+  const protocol::join j{
+      .task = *task_, .leader = me_.id, .term = term_, .invitee = camera, .reassign = reassign};
   send(camera, j, out);
   if (auto via = relayed_by_.find(camera); via != relayed_by_.end() && members_.count(via->second))
     send(via->second, j, out);
@@ -818,6 +912,7 @@ protocol::status camera_controller::own_status() const {
   s.task = task_->task;
   s.sender = me_.id;
   s.leader = leader_;
+  s.term = term_;
   s.relevance = relevance(now_);
   s.min_cameras = task_->min_cameras;
   s.max_cameras = task_->max_cameras;
@@ -829,6 +924,7 @@ protocol::csp_data camera_controller::own_csp_data(std::uint32_t round) const {
   protocol::csp_data d;
   d.task = task_->task;
   d.leader = me_.id;
+  d.term = term_;
   d.round = round;
   d.min_cameras = task_->min_cameras;
   d.max_cameras = task_->max_cameras;
@@ -853,7 +949,10 @@ void camera_controller::start_csp(std::vector<protocol::relevance_bid> contended
   std::vector<task_id> tasks;
   for (const auto& [leader, t] : round.waiting) {
     tasks.push_back(t);
-    send(leader, protocol::csp_query{task_->task, me_.id, round.round}, out);
+    send(leader,
+         protocol::csp_query{
+             .solver_task = task_->task, .solver = me_.id, .term = term_, .round = round.round},
+         out);
   }
   std::vector<int> cameras;
   for (const auto& b : contended) cameras.push_back(b.bidder);
@@ -910,7 +1009,11 @@ void camera_controller::solve_csp(controller_output& out) {
     } else {
       const auto minimum = g < solution.minima.size() ? solution.minima[g] : 0u;
       send(group.leader,
-           protocol::csp_result{group.task, me_.id, cameras, static_cast<std::uint16_t>(minimum)},
+           protocol::csp_result{.task = group.task,
+                                .solver = me_.id,
+                                .term = term_,
+                                .cameras = cameras,
+                                .minimum = static_cast<std::uint16_t>(minimum)},
            out);
     }
   }
@@ -984,7 +1087,10 @@ void camera_controller::plan_next(controller_output& out) {
   // Section III-C: a camera with no task returns to its default pose (the reset routine); one
   // that follows a find while bidding, or looks for one, returns once it no longer does.
   const bool holds = settings_.track_while_bidding ? following : !pending_.empty();
-  if (!task_ && !holds && !(pose_ == me_.home)) out.command = me_.home;
+  // A failed search holds nothing either: a leader waiting to hear its hand-over taken up
+  // already turns home.
+  const bool failed = task_ && fsm_.state() == vision::tracking_state::failed;
+  if ((failed || (!task_ && !holds)) && !(pose_ == me_.home)) out.command = me_.home;
 }
 
 }  // namespace argus::controller

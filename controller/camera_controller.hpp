@@ -48,6 +48,12 @@ class camera_controller final : public strategy {
   group_role role() const noexcept { return role_; }
   /// The leader it follows (itself when leading); 0 when in no group.
   int leader() const noexcept { return task_ ? leader_ : 0; }
+  /// The epoch of the leadership it follows or holds (docs/protocol.md, "Terms"); 0 when in no
+  /// group.
+  protocol::term_epoch term() const noexcept { return task_ ? term_ : 0; }
+  /// Whether it handed its group over and waits to hear the new leader lead (it then follows
+  /// at the hand-over's epoch, which the new leader takes up only when the hand-over arrives).
+  bool handing_over() const noexcept { return task_ && handed_over_at_.has_value(); }
   /// Its members, when it leads (ascending).
   std::vector<int> members() const;
   /// The child state of Fig. 10's inset, while performing a task.
@@ -60,6 +66,7 @@ class camera_controller final : public strategy {
   struct pending_query {
     protocol::task_description task;
     int leader = 0;
+    protocol::term_epoch term = 0;
     int querier = 0;
     std::uint32_t auction = 0;
     std::int64_t look_until = 0;
@@ -119,13 +126,23 @@ class camera_controller final : public strategy {
 
   // Transitions.
   void start_task(const protocol::task_description& task, group_role role, int leader,
-                  double relevance, std::int64_t seen, controller_output& out);
+                  double relevance, std::int64_t seen, protocol::term_epoch term,
+                  controller_output& out);
   void leave_task(std::string_view reason, controller_output& out);
-  void become_leader(std::string_view reason, controller_output& out);
-  void follow_leader(int leader, std::string_view reason, controller_output& out);
-  void met_other_leader(int other, controller_output& out);
-  // Whether `leader` handed its group over or was taken for failed recently (its news stale).
-  bool retired(int leader);
+  // Leads at `term` (a new epoch past every one heard of this task when nullopt).
+  void become_leader(std::string_view reason, controller_output& out,
+                     std::optional<protocol::term_epoch> term = std::nullopt);
+  void follow_leader(int leader, protocol::term_epoch term, std::string_view reason,
+                     controller_output& out);
+  // Another leader of this node's task, at `term`: a newer term is followed, an older one
+  // answered with this node's status, an equal one merged by the scenario's merge rule.
+  void met_other_leader(int other, protocol::term_epoch term, int sender, controller_output& out);
+  // Records an epoch heard for `task`; returns the next epoch nobody here has heard of.
+  void heard_term(task_id task, protocol::term_epoch term);
+  protocol::term_epoch next_term(task_id task) const;
+  // This node's status to `to`, who sent a term older than this node's (at most once per
+  // heartbeat interval for each).
+  void answer_stale(int to, controller_output& out);
   // Forgets the group this node led or followed: members, auction, conflict, negotiation.
   void forget_group();
   void emit_leader_changed(int leader, int previous, std::string_view reason,
@@ -133,14 +150,17 @@ class camera_controller final : public strategy {
   void absorb(int camera, controller_output& out);
 
   // Leader's work.
-  bool hand_over(double mine, controller_output& out);
+  // Gives the group to the best member (only one better than `mine` and above the threshold,
+  // unless `to_anyone`); false when none qualifies.
+  bool hand_over(double mine, controller_output& out, bool to_anyone = false);
   void open_auction(controller_output& out);
   void close_auction(controller_output& out);
   void invite(int camera, bool reassign, controller_output& out);
   void start_csp(std::vector<protocol::relevance_bid> contended, controller_output& out);
   void solve_csp(controller_output& out);
   void apply_assignment(const std::vector<int>& cameras, controller_output& out);
-  void apply_demotions(const demotion_negotiator::actions& a, controller_output& out);
+  void apply_demotions(const demotion_negotiator::actions& a, controller_output& out,
+                       std::optional<protocol::term_epoch> peer_term = std::nullopt);
   protocol::csp_data own_csp_data(std::uint32_t round) const;
   protocol::status own_status() const;
 
@@ -194,9 +214,12 @@ class camera_controller final : public strategy {
   std::optional<std::int64_t> handed_over_at_;
   // Member: the members its leader's last status listed (none heard yet: nullopt).
   std::optional<std::vector<int>> leader_members_;
-  // Leaders that handed their group over or were taken for failed, and when: their late
-  // statuses, and statuses naming them as leader, are stale.
-  std::map<int, std::int64_t> retired_;
+  // The epoch of the leadership followed or held (docs/protocol.md, "Terms").
+  protocol::term_epoch term_ = 0;
+  // The newest epoch heard of each task (of any message), so that a new leadership is newer.
+  std::map<task_id, protocol::term_epoch> epochs_;
+  // When this node last answered a stale term from each node.
+  std::map<int, std::int64_t> answered_stale_;
   // Which member relayed each bidder's bid (to forward the join through it).
   std::map<int, int> relayed_by_;
   // The bids of the last closed auction (candidates for conflict resolution).

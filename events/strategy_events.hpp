@@ -51,10 +51,11 @@ struct task_created {
   task_id task = 0;
   unsigned min_cameras = 0, max_cameras = 0;
   fixed<4> relevance;
+  std::uint64_t term = 0;
   template <class F>
   void members(F&& f) {
     f("camera", camera), f("task", task), f("min_cameras", min_cameras),
-        f("max_cameras", max_cameras), f("relevance", relevance);
+        f("max_cameras", max_cameras), f("relevance", relevance), f("term", term);
   }
 };
 
@@ -120,9 +121,11 @@ struct joined {
   task_id task = 0;
   int leader = 0;
   bool reassign = false;
+  std::uint64_t term = 0;
   template <class F>
   void members(F&& f) {
-    f("camera", camera), f("task", task), f("leader", leader), f("reassign", reassign);
+    f("camera", camera), f("task", task), f("leader", leader), f("reassign", reassign),
+        f("term", term);
   }
 };
 
@@ -230,10 +233,11 @@ struct leader_changed {
   task_id task = 0;
   int leader = 0, previous = 0;
   std::string reason;
+  std::uint64_t term = 0;
   template <class F>
   void members(F&& f) {
     f("camera", camera), f("task", task), f("leader", leader), f("previous", previous),
-        f("reason", reason);
+        f("reason", reason), f("term", term);
   }
 };
 

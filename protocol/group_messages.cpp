@@ -182,33 +182,34 @@ class reader {
 
 // Each message's fields, in wire order: the one list both directions use.
 auto fields(query_relevance& m) {
-  return std::tie(m.task, m.leader, m.auction, m.relay);
+  return std::tie(m.task, m.leader, m.term, m.auction, m.relay);
 }
 auto fields(relevance_bid& m) {
-  return std::tie(m.task, m.leader, m.auction, m.bidder, m.relevance, m.busy, m.locked,
+  return std::tie(m.task, m.leader, m.term, m.auction, m.bidder, m.relevance, m.busy, m.locked,
                   m.other_task, m.other_leader);
 }
 auto fields(join& m) {
-  return std::tie(m.task, m.leader, m.invitee, m.reassign);
+  return std::tie(m.task, m.leader, m.term, m.invitee, m.reassign);
 }
 auto fields(status& m) {
-  return std::tie(m.task, m.sender, m.leader, m.relevance, m.min_cameras, m.max_cameras, m.members,
-                  m.leaving);
+  return std::tie(m.task, m.sender, m.leader, m.term, m.relevance, m.min_cameras, m.max_cameras,
+                  m.members, m.leaving);
 }
 auto fields(handover& m) {
-  return std::tie(m.task, m.old_leader, m.new_leader, m.members);
+  return std::tie(m.task, m.old_leader, m.new_leader, m.term, m.members);
 }
 auto fields(demotion& m) {
-  return std::tie(m.task, m.sender, m.members);
+  return std::tie(m.task, m.sender, m.term, m.members);
 }
 auto fields(csp_query& m) {
-  return std::tie(m.solver_task, m.solver, m.round);
+  return std::tie(m.solver_task, m.solver, m.term, m.round);
 }
 auto fields(csp_data& m) {
-  return std::tie(m.task, m.leader, m.round, m.min_cameras, m.max_cameras, m.candidates, m.pinned);
+  return std::tie(m.task, m.leader, m.term, m.round, m.min_cameras, m.max_cameras, m.candidates,
+                  m.pinned);
 }
 auto fields(csp_result& m) {
-  return std::tie(m.task, m.solver, m.cameras, m.minimum);
+  return std::tie(m.task, m.solver, m.term, m.cameras, m.minimum);
 }
 auto fields(task_cancel& m) {
   return std::tie(m.task, m.sender);

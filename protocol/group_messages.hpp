@@ -31,6 +31,13 @@ struct signature {
   friend bool operator==(const signature&, const signature&) = default;
 };
 
+/// A leadership's epoch within its task (docs/protocol.md, "Terms"). A term is the pair
+/// (epoch, leader id), ordered by epoch and then by id: at most one leader per term by
+/// construction. A node that hears a term of its task older than the one it follows ignores
+/// it; hand-over, taking over from a failed leader and absorbing a demoted leader start a
+/// newer epoch.
+using term_epoch = std::uint32_t;
+
 /// What a task asks for: whom to observe and with how many cameras.
 struct task_description {
   task_id task = 0;
@@ -46,6 +53,7 @@ struct task_description {
 struct query_relevance {
   task_description task;
   int leader = 0;
+  term_epoch term = 0;  // the leader's
   std::uint32_t auction = 0;
   bool relay = false;
   friend bool operator==(const query_relevance&, const query_relevance&) = default;
@@ -59,6 +67,7 @@ struct query_relevance {
 struct relevance_bid {
   task_id task = 0;
   int leader = 0;
+  term_epoch term = 0;  // of the auction's leader, as its query said
   std::uint32_t auction = 0;
   int bidder = 0;
   double relevance = 0.0;
@@ -76,6 +85,7 @@ struct relevance_bid {
 struct join {
   task_description task;
   int leader = 0;
+  term_epoch term = 0;  // the leader's
   int invitee = 0;
   bool reassign = false;
   friend bool operator==(const join&, const join&) = default;
@@ -89,6 +99,7 @@ struct status {
   task_id task = 0;
   int sender = 0;
   int leader = 0;
+  term_epoch term = 0;  // of `leader`'s leadership, as the sender knows it
   double relevance = 0.0;
   std::uint16_t min_cameras = 1;
   std::uint16_t max_cameras = 1;
@@ -103,6 +114,7 @@ struct handover {
   task_description task;
   int old_leader = 0;
   int new_leader = 0;
+  term_epoch term = 0;  // the new leader's: one past the old leader's
   std::vector<int> members;
   friend bool operator==(const handover&, const handover&) = default;
 };
@@ -116,6 +128,7 @@ struct demotion {
   demotion_step step = demotion_step::demote;
   task_id task = 0;
   int sender = 0;
+  term_epoch term = 0;  // the sender's
   std::vector<int> members;
   friend bool operator==(const demotion&, const demotion&) = default;
 };
@@ -125,6 +138,7 @@ struct demotion {
 struct csp_query {
   task_id solver_task = 0;
   int solver = 0;
+  term_epoch term = 0;  // the solver's
   std::uint32_t round = 0;
   friend bool operator==(const csp_query&, const csp_query&) = default;
 };
@@ -141,6 +155,7 @@ struct camera_relevance {
 struct csp_data {
   task_id task = 0;
   int leader = 0;
+  term_epoch term = 0;  // the leader's
   std::uint32_t round = 0;
   std::uint16_t min_cameras = 1;
   std::uint16_t max_cameras = 1;
@@ -154,6 +169,7 @@ struct csp_data {
 struct csp_result {
   task_id task = 0;
   int solver = 0;
+  term_epoch term = 0;  // the solver's
   std::vector<int> cameras;
   std::uint16_t minimum = 0;
   friend bool operator==(const csp_result&, const csp_result&) = default;

@@ -26,7 +26,7 @@ struct bidder {
     controller_input in;
     in.tick = 0;
     in.pose = node_identity::from(test_camera(2)).home;
-    in.messages.push_back({1, protocol::query_relevance{task, 1, 1, false}});
+    in.messages.push_back({1, protocol::query_relevance{task, 1, 1, 1, false}});
     record(node.step(in));
     for (std::size_t i = 0; i < looks.size(); ++i) {
       controller_input next;

@@ -125,6 +125,39 @@ TEST(group_protocol, a_leader_that_loses_its_target_hands_the_group_over) {
   EXPECT_EQ(*h.last_command(1), node_identity::from(testing::test_camera(1)).home);
 }
 
+// Fig. 10: a leader whose search failed leaves the task, head home; never a frozen head. Camera
+// 1 loses her at 10 s; its member 2 still sees her until 13 s, when 1's search (1 s wait, 2 s
+// search here) fails while 1's own relevance, decayed since 10 s, is still above the threshold
+// (so the low-relevance hand-over does not apply). It hands the group to 2 and leaves.
+TEST(group_protocol, a_leader_whose_search_failed_hands_over_and_goes_home) {
+  auto s = test_scenario({1, 2, 3});
+  s.controller.wait_timeout = config::seconds{1.0};
+  s.controller.search_timeout = config::seconds{2.0};
+  auto h = three_cameras(s);
+  h.run_until(100);
+  ASSERT_EQ(h.node(1).members(), std::vector<int>{2});
+  h.sees = [](int camera, task_id, std::int64_t tick) -> std::optional<cv::Rect2d> {
+    if (camera == 2 && tick < 150) return centred_box();
+    return std::nullopt;
+  };
+  h.run_until(135);
+  ASSERT_EQ(h.node(1).tracking(), vision::tracking_state::failed);
+  h.run_until(137);
+  EXPECT_EQ(h.count("handoff", 1), 1u);
+  // Its head turns home at once, while it waits to hear camera 2 lead.
+  ASSERT_TRUE(h.last_command(1));
+  EXPECT_EQ(*h.last_command(1), node_identity::from(testing::test_camera(1)).home);
+  h.run_until(160);
+  EXPECT_EQ(h.node(2).role(), group_role::leader);
+  EXPECT_EQ(h.node(1).state(), node_state::idle);
+  ASSERT_TRUE(h.last_command(1));
+  EXPECT_EQ(*h.last_command(1), node_identity::from(testing::test_camera(1)).home);
+  // Camera 2, alone once its own search fails, ends the task: nobody holds a frozen head.
+  h.run_until(200);
+  EXPECT_EQ(h.node(2).state(), node_state::idle);
+  EXPECT_EQ(h.count("group_vanished", 2), 1u);
+}
+
 // The member given the group crashes as the hand-over is sent (or the hand-over is lost and the
 // member leaves): nobody would hold the task. The old leader, not heard from a new leader
 // within the leader failure timeout, takes the group back and keeps looking.
@@ -217,7 +250,7 @@ TEST(group_protocol, a_member_relays_first_hand_statuses_only) {
     return sent.template operator()<protocol::status>(out, to);
   };
   const auto leader_status = [&task](std::vector<int> members) {
-    return protocol::status{task.task, 16, 16, 0.9, 1, 4, std::move(members), false};
+    return protocol::status{task.task, 16, 16, 1, 0.9, 1, 4, std::move(members), false};
   };
   std::int64_t tick = 0;
   const auto step = [&](std::vector<received_message> messages) {
@@ -227,11 +260,11 @@ TEST(group_protocol, a_member_relays_first_hand_statuses_only) {
     in.messages = std::move(messages);
     return member.step(in);
   };
-  step({{16, protocol::join{task, 16, 3, false}}});
+  step({{16, protocol::join{task, 16, 1, 3, false}}});
   ASSERT_EQ(member.leader(), 16);
   step({{16, leader_status({3})}});
   // 9 follows 16 but is not on its list: 3 relays for it, its status up to 16...
-  const auto up = step({{9, protocol::status{task.task, 9, 16, 0.7, 1, 4, {}, false}}});
+  const auto up = step({{9, protocol::status{task.task, 9, 16, 1, 0.7, 1, 4, {}, false}}});
   EXPECT_EQ(statuses_to(up, 16), 1);
   // ...and 16's own statuses down to it.
   EXPECT_EQ(statuses_to(step({{16, leader_status({3})}}), 9), 1);
@@ -241,14 +274,14 @@ TEST(group_protocol, a_member_relays_first_hand_statuses_only) {
   EXPECT_EQ(statuses_to(relayed, 4), 0);
   EXPECT_EQ(member.leader(), 16);
   // Nor does a copy of 9's status that another member relayed go up again.
-  EXPECT_EQ(statuses_to(step({{4, protocol::status{task.task, 9, 16, 0.7, 1, 4, {}, false}}}), 16),
-            0);
+  EXPECT_EQ(
+      statuses_to(step({{4, protocol::status{task.task, 9, 16, 1, 0.7, 1, 4, {}, false}}}), 16), 0);
   // Bids likewise: a bidder's own bid goes up to the leader, a relayed copy does not.
-  const protocol::relevance_bid bid{task.task, 16, 1, 5, 0.6, false, false, std::nullopt, 0};
+  const protocol::relevance_bid bid{task.task, 16, 1, 1, 5, 0.6, false, false, std::nullopt, 0};
   EXPECT_EQ(sent.template operator()<protocol::relevance_bid>(step({{5, bid}}), 16), 1);
   EXPECT_EQ(sent.template operator()<protocol::relevance_bid>(step({{4, bid}}), 16), 0);
   // And joins: the leader's own copy goes on to the invitee, a copy from anyone else does not.
-  const protocol::join join{task, 16, 5, false};
+  const protocol::join join{task, 16, 1, 5, false};
   EXPECT_EQ(sent.template operator()<protocol::join>(step({{16, join}}), 5), 1);
   EXPECT_EQ(sent.template operator()<protocol::join>(step({{4, join}}), 5), 0);
 }

@@ -96,6 +96,14 @@ class protocol_harness {
 
   /// Camera `id` stops (a crash): it neither runs nor receives from now on.
   void crash(int id) { down_.insert(id); }
+  /// Whether camera `id` crashed.
+  bool down(int id) const { return down_.count(id) != 0; }
+  /// The ids of every camera, ascending.
+  std::vector<int> ids() const {
+    std::vector<int> out;
+    for (const auto& [id, n] : nodes_) out.push_back(id);
+    return out;
+  }
 
   /// Runs ticks [now, until).
   void run_until(std::int64_t until) {

@@ -48,8 +48,8 @@ struct follower {
     return out;
   }
 
-  void query() { step({{1, protocol::query_relevance{task, 1, 1, false}}}); }
-  void join() { step({{1, protocol::join{task, 1, 2, false}}}); }
+  void query() { step({{1, protocol::query_relevance{task, 1, 1, 1, false}}}); }
+  void join() { step({{1, protocol::join{task, 1, 1, 2, false}}}); }
 
   config::scenario settings;
   camera_controller node;

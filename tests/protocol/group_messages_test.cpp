@@ -29,21 +29,22 @@ task_description a_task_with_halves() {
 }
 
 std::vector<group_message> one_of_each() {
-  relevance_bid bid{3, 1, 4, 9, 0.625, true, false, 5u, 6};
-  return {query_relevance{a_task(), 1, 4, true},
+  // Every term a different value, so that a field dropped or swapped on the wire shows.
+  relevance_bid bid{3, 1, 11, 4, 9, 0.625, true, false, 5u, 6};
+  return {query_relevance{a_task(), 1, 12, 4, true},
           bid,
-          join{a_task(), 1, 9, true},
-          status{3, 9, 1, 0.5, 2, 3, {2, 9}, true},
-          handover{a_task(), 1, 9, {2, 9}},
-          demotion{demotion_step::demote, 3, 1, {}},
-          demotion{demotion_step::ack, 3, 1, {4, 5}},
-          demotion{demotion_step::nack, 3, 1, {}},
-          demotion{demotion_step::retry, 3, 1, {}},
-          csp_query{3, 1, 2},
-          csp_data{3, 1, 2, 1, 2, {{4, 0.5}, {5, 0.25}}, {4}},
-          csp_result{3, 1, {4, 5}, 1},
+          join{a_task(), 1, 13, 9, true},
+          status{3, 9, 1, 14, 0.5, 2, 3, {2, 9}, true},
+          handover{a_task(), 1, 9, 15, {2, 9}},
+          demotion{demotion_step::demote, 3, 1, 16, {}},
+          demotion{demotion_step::ack, 3, 1, 17, {4, 5}},
+          demotion{demotion_step::nack, 3, 1, 18, {}},
+          demotion{demotion_step::retry, 3, 1, 19, {}},
+          csp_query{3, 1, 20, 2},
+          csp_data{3, 1, 21, 2, 1, 2, {{4, 0.5}, {5, 0.25}}, {4}},
+          csp_result{3, 1, 22, {4, 5}, 1},
           task_cancel{3, 1},
-          query_relevance{a_task_with_halves(), 1, 4, false},
+          query_relevance{a_task_with_halves(), 1, 23, 4, false},
           note{3, 1, "hello", std::string("\0\x01bytes", 7)}};
 }
 
@@ -56,8 +57,8 @@ TEST(group_messages, every_kind_survives_its_encoding) {
 }
 
 TEST(group_messages, a_signature_carries_its_halves_only_when_it_has_them) {
-  const auto plain = join{a_task(), 1, 9, true};
-  const auto halved = join{a_task_with_halves(), 1, 9, true};
+  const auto plain = join{a_task(), 1, 13, 9, true};
+  const auto halved = join{a_task_with_halves(), 1, 13, 9, true};
   const auto back = decode("join", encode(halved));
   ASSERT_TRUE(back);
   EXPECT_EQ(*back, group_message{halved});
@@ -96,9 +97,9 @@ TEST(group_messages, a_note_longer_than_its_count_is_refused_not_cut) {
 }
 
 TEST(group_messages, out_of_range_values_are_refused) {
-  auto bid = relevance_bid{3, 1, 4, 9, 1.5, false, false, std::nullopt, 0};
+  auto bid = relevance_bid{3, 1, 1, 4, 9, 1.5, false, false, std::nullopt, 0};
   EXPECT_FALSE(decode("relevance", encode(bid)));
-  auto q = query_relevance{a_task(), 1, 4, false};
+  auto q = query_relevance{a_task(), 1, 1, 4, false};
   q.task.min_cameras = 4;  // more than the maximum
   EXPECT_FALSE(decode("queryrelevance", encode(q)));
   EXPECT_FALSE(decode("nosuchkind", encode(bid)));
