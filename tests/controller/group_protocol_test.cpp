@@ -5,6 +5,8 @@
 
 #include <algorithm>
 
+#include "controller/csp_problem_builder.hpp"
+#include "fmt/format.h"
 #include "tests/controller/protocol_harness.hpp"
 
 namespace argus::controller {
@@ -195,19 +197,40 @@ protocol_harness two_leaders(config::merge_rule rule) {
   return h;
 }
 
+// Who follows whom after the merge: the demoted leader and every member follow the one that
+// stays, at its epoch, which is newer than either leadership's at the start (the merge started
+// a new term).
+void expect_one_group_under(protocol_harness& h, int winner, int loser) {
+  EXPECT_EQ(h.leaders(7), std::set<int>{winner});
+  EXPECT_EQ(h.node(loser).role(), group_role::member);
+  EXPECT_EQ(h.node(loser).leader(), winner);
+  EXPECT_GE(h.node(winner).term(), 2u);
+  for (int id : {1, 2, 3}) {
+    if (id == winner || !h.node(id).task()) continue;
+    EXPECT_EQ(h.node(id).leader(), winner) << "camera " << id;
+    EXPECT_EQ(h.node(id).term(), h.node(winner).term()) << "camera " << id;
+  }
+  EXPECT_EQ(h.count("leader_changed", winner), 0u) << "the one that stays never followed";
+  EXPECT_GE(h.count("leader_changed", loser), 1u);
+}
+
 TEST(group_protocol, two_leaders_of_one_task_merge_under_the_highest_id) {
   auto h = two_leaders(config::merge_rule::highest_id);
   h.run_until(100);
-  EXPECT_EQ(h.leaders(7), std::set<int>{2});
-  EXPECT_EQ(h.node(1).leader(), 2);
+  expect_one_group_under(h, 2, 1);
 }
 
 TEST(group_protocol, two_leaders_of_one_task_merge_by_negotiation) {
   auto h = two_leaders(config::merge_rule::negotiation);
   h.run_until(300);
-  EXPECT_EQ(h.leaders(7).size(), 1u);
+  ASSERT_EQ(h.leaders(7).size(), 1u);
   EXPECT_GE(h.sent("demote"), 1u);
   EXPECT_GE(h.sent("demoteack"), 1u);
+  // Fig. 15 Case 2(1): the leader that acknowledged its demotion follows the other.
+  const int winner = *h.leaders(7).begin();
+  expect_one_group_under(h, winner, 3 - winner);
+  EXPECT_GE(h.count("demote", winner), 1u);
+  EXPECT_EQ(h.count("demoteack", 3 - winner), 1u);
 }
 
 // Cameras 1 and 3 cannot hear each other; 2 hears both. Two leaders of one task, 1 and 3:
@@ -338,11 +361,61 @@ TEST(group_protocol, a_camera_within_its_minimum_task_duration_is_not_taken) {
   EXPECT_GE(h.count("bid", 2), 1u);  // 2 bid for task 8, busy and locked
 }
 
+// The conflict's answer must be the optimum for what the solver was told: leader 1's part of
+// the CSP (its `cspdata`, captured on the way) and camera 2's busy bid to leader 3. Each group
+// needs 2; with its leader pinned it needs one more, and only camera 2 can move: no assignment
+// meets both minima, so they are relaxed (csp.hpp's rule 3: both have one relevant camera, the
+// higher index, task 8, goes to 0).
 TEST(group_protocol, a_busy_camera_is_settled_by_conflict_resolution) {
   auto s = test_scenario({1, 2, 3});
   s.controller.min_task_duration = config::seconds{0.0};
   auto h = contested(std::move(s));
+  auto told = std::make_shared<std::vector<protocol::csp_data>>();
+  auto bids = std::make_shared<std::vector<protocol::relevance_bid>>();
+  h.drop = [told, bids](int from, int to, const protocol::group_message& m) {
+    if (const auto* d = std::get_if<protocol::csp_data>(&m); d && to == 3) told->push_back(*d);
+    if (const auto* b = std::get_if<protocol::relevance_bid>(&m);
+        b && from == 2 && to == 3 && b->busy)
+      bids->push_back(*b);
+    return false;
+  };
   h.run_until(300);
+  // Leader 3 auctions again every auction interval and meets the same conflict each time: the
+  // same part from leader 1 each round.
+  ASSERT_FALSE(told->empty());
+  for (const auto& d : *told) {
+    EXPECT_EQ(d.candidates, told->front().candidates);
+    EXPECT_EQ(d.pinned, told->front().pinned);
+  }
+  ASSERT_FALSE(bids->empty());
+  const protocol::csp_data own{.task = 8,
+                               .leader = 3,
+                               .term = 0,
+                               .round = 0,
+                               .min_cameras = 2,
+                               .max_cameras = 2,
+                               .candidates = {{2, bids->back().relevance}},
+                               .pinned = {}};
+  const auto built = build_csp({own, told->front()}, 0.1);
+  const auto best = protocol::solve(built.problem, protocol::csp_solver_kind::all_solv);
+  ASSERT_TRUE(best.relaxed);
+  EXPECT_EQ(best.minima, (std::vector<unsigned>{1, 0}));  // task 7, task 8
+  std::size_t rounds = 0;
+  for (const auto& [camera, e] : h.events()) {
+    if (e.kind != "csp_solved") continue;
+    ++rounds;
+    const auto& solved = e.fields_json;
+    EXPECT_NE(solved.find("\"relaxed\":true"), std::string::npos) << solved;
+    EXPECT_NE(solved.find("\"minima\":{\"7\":1,\"8\":0}"), std::string::npos) << solved;
+    EXPECT_NE(solved.find(fmt::format("\"weight\":{:.4f}", best.weight)), std::string::npos)
+        << solved;
+    EXPECT_NE(solved.find("\"optimal\":true"), std::string::npos) << solved;
+  }
+  EXPECT_EQ(rounds, told->size());
+  // Camera 2 ends in the group the optimum gives it.
+  const bool optimum_to_7 = !built.assigned(best, 0).empty();
+  const bool optimum_to_8 = !built.assigned(best, 1).empty();
+  ASSERT_NE(optimum_to_7, optimum_to_8);
   EXPECT_GE(h.count("conflict", 3), 1u);
   EXPECT_GE(h.count("csp_solved", 3), 1u);
   EXPECT_GE(h.sent("cspquery"), 1u);
@@ -354,7 +427,8 @@ TEST(group_protocol, a_busy_camera_is_settled_by_conflict_resolution) {
   const bool in7 = std::find(g7.begin(), g7.end(), 2) != g7.end();
   const bool in8 = std::find(g8.begin(), g8.end(), 2) != g8.end();
   EXPECT_NE(in7, in8);
-  EXPECT_EQ(h.node(2).task(), in7 ? 7u : 8u);
+  EXPECT_EQ(in7, optimum_to_7);
+  EXPECT_EQ(h.node(2).task(), optimum_to_7 ? 7u : 8u);
 }
 
 }  // namespace
