@@ -19,6 +19,17 @@ constexpr std::array<std::string_view, 8> task_keys{
     "at",          "camera",   "pedestrian", "pixel", "first_to_enter", "cameras_wanted",
     "max_cameras", "cancel_at"};
 
+/// The YAML value `value` of the spec `text`; YAML that does not parse (`at=[`) is a
+/// command-line error naming --task, like every other malformed spec.
+YAML::Node task_value(const std::string& value, const std::string& text) {
+  try {
+    return YAML::Load(value);
+  } catch (const YAML::Exception& e) {
+    throw CLI::ValidationError("--task",
+                               fmt::format("cannot read '{}' in '{}': {}", value, text, e.msg));
+  }
+}
+
 YAML::Node task_node(const std::string& text) {
   if (const auto bad = config::first_non_utf8(text))
     throw CLI::ValidationError("--task",
@@ -44,11 +55,11 @@ YAML::Node task_node(const std::string& text) {
         throw CLI::ValidationError(
             "--task", fmt::format("expected pixel=XxY, e.g. pixel=160x120, got '{}'", value));
       YAML::Node point(YAML::NodeType::Sequence);
-      point.push_back(YAML::Load(value.substr(0, x)));
-      point.push_back(YAML::Load(value.substr(x + 1)));
+      point.push_back(task_value(value.substr(0, x), text));
+      point.push_back(task_value(value.substr(x + 1), text));
       node[key] = point;
     } else {
-      node[key] = YAML::Load(value);
+      node[key] = task_value(value, text);
     }
   }
   return node;

@@ -12,9 +12,12 @@
 #include <cstring>
 #include <map>
 #include <memory>
+#include <optional>
+#include <sstream>
 
 #include "config/mapping_reader.hpp"
 #include "config/utf8_text.hpp"
+#include "config/yaml_guards.hpp"
 #include "config/yaml_override.hpp"
 #include "config/yaml_reader.hpp"
 
@@ -683,9 +686,12 @@ scenario parse_scenario(std::string_view yaml_text, const std::string& source_na
                         std::span<const field_override> overrides) {
   if (const auto bad = first_non_utf8(yaml_text))
     throw scenario_error({not_utf8(source_name, *bad)});
+  if (auto nul = nul_byte(source_name, yaml_text)) throw scenario_error({std::move(*nul)});
   std::vector<YAML::Node> documents;
   try {
-    documents = YAML::LoadAll(std::string{yaml_text});
+    const std::string text{yaml_text};
+    refuse_stuck_documents(text);
+    documents = YAML::LoadAll(text);
   } catch (const YAML::Exception& error) {
     // yaml-cpp marks are 0-based; -1 (unknown) becomes 0.
     throw scenario_error(

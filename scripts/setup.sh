@@ -11,6 +11,7 @@ argus_packages=(
   libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri
   libyaml-cpp-dev libcli11-dev libspdlog-dev libfmt-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev clang-format
+  clang-14 libclang-rt-14-dev  # the fuzz harnesses (tests/fuzz): libFuzzer and its sanitizers
   chromium  # the report test loads report.html in headless Chromium
   libcpp-httplib-dev  # argus serve's HTTP server (Server-Sent Events for the live stream)
   chromium-driver python3-selenium  # the live console's end-to-end test drives the page

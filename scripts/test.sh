@@ -1,15 +1,18 @@
 #!/usr/bin/env bash
 # Installs what is missing, then builds and runs the whole test suite three ways:
 #   Release (everything); ASan+UBSan (all but the tests labelled "slow"); TSan (the actor layer,
-#   label "actors", but "slow").
-#   scripts/test.sh            all three
+#   label "actors", but "slow"); then fuzzes: the libFuzzer harnesses of tests/fuzz (clang),
+#   each replaying its corpus and then fuzzing for 30 s.
+#   scripts/test.sh            all four
 #   scripts/test.sh --quick    Release only
-# Any failing test or sanitizer report fails the script.
+# Any failing test, sanitizer report or fuzzer crash fails the script.
 #
-# Each stage prints its time and, at the end, its share of the 45-minute budget for a cold run
-# on 2 cores (bench/RESULTS.md, "A newcomer's first half hour"). On a warm run (the compiler
-# cache answered nearly every compile) a stage over its share fails the script: something made
-# the tests themselves slow, and a cold CI run would no longer fit. A cold run only warns.
+# Each stage prints its time and, at the end, its share of the budget for a cold run on 2 cores:
+# 45 minutes for the three test stages (bench/RESULTS.md, "A newcomer's first half hour"), and
+# the fuzz stage's own share on top (bench/RESULTS.md, "Fuzzing (issue 50)"). On a warm run (the
+# compiler cache answered nearly every compile) a stage over its share fails the script:
+# something made the tests themselves slow, and a cold CI run would no longer fit. A cold run
+# only warns.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/setup.sh"
 cd "$ARGUS_ROOT"
@@ -18,8 +21,9 @@ quick=0
 jobs="$(nproc)"
 stage_time() { echo "$((SECONDS / 60)) min $((SECONDS % 60)) s in"; }
 
-# Shares of the 45 minutes, from the bare-machine measurement (whole stage: build and tests).
-declare -A budget_s=([release]=720 [asan]=1320 [tsan]=660)
+# Shares of the 45 minutes, from the bare-machine measurement (whole stage: build and tests),
+# and the fuzz stage's, measured alike (481 s: its cold build, then 7 harnesses at about 33 s each).
+declare -A budget_s=([release]=720 [asan]=1320 [tsan]=660 [fuzz]=540)
 declare -A stage_s stage_warm
 stage_started=0
 ccache_compiles() {  # hits and misses so far, "HITS MISSES"
@@ -48,8 +52,8 @@ stage_end() {  # stage_end NAME: records its time and whether its compiles came 
 }
 check_budgets() {
   local name over=0 kind
-  echo "== stage times against their share of a cold run's 45 minutes on 2 cores:"
-  for name in release asan tsan; do
+  echo "== stage times against their share of a cold run on 2 cores:"
+  for name in release asan tsan fuzz; do
     [ -n "${stage_s[$name]:-}" ] || continue
     kind=cold
     [ "${stage_warm[$name]}" -eq 1 ] && kind=warm
@@ -103,5 +107,37 @@ argus_build build-tsan --target actor_tests -DCMAKE_BUILD_TYPE=RelWithDebInfo -D
   -DCMAKE_PREFIX_PATH="$ARGUS_ROOT/build-tsan/caf"
 ctest --test-dir build-tsan --output-on-failure -j "$jobs" -L actors -LE slow
 stage_end tsan
+
+stage_begin "Fuzz: libFuzzer harnesses (clang), each corpus replayed, then 30 s of fuzzing"
+# Only the harnesses and the libraries they need, instrumented (tests/fuzz/CMakeLists.txt).
+argus_build build-fuzz --target fuzz_harnesses -DCMAKE_CXX_COMPILER=clang++-14 \
+  -DCMAKE_C_COMPILER=clang-14 -DARGUS_FUZZ=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DARGUS_UNITY=ON \
+  -DARGUS_BUILD_BENCH=OFF -DARGUS_BUILD_TESTS=OFF -DARGUS_PYTHON=OFF
+# The checkout is never written: the fuzzing grows a scratch copy of each corpus.
+fuzz_scratch="$(mktemp -d)"
+for corpus in tests/fuzz/corpus/*/; do
+  harness="$(basename "$corpus")"
+  fuzzer="build-fuzz/tests/fuzz/fuzz_$harness"
+  dict=()
+  [ -f "tests/fuzz/$harness.dict" ] && dict=(-dict="tests/fuzz/$harness.dict")
+  echo "== fuzz $harness: replaying $(find "$corpus" -type f | wc -l) inputs, then 30 s"
+  mkdir -p "$fuzz_scratch/$harness"
+  cp -r "$corpus". "$fuzz_scratch/$harness/corpus"
+  # Each file of the corpus once (libFuzzer runs the files it is given and stops), then fuzzing.
+  if ! find "$corpus" -type f -print0 | xargs -0 -r "$fuzzer" -timeout=10 -rss_limit_mb=4096 \
+         -artifact_prefix="$fuzz_scratch/$harness/" > "$fuzz_scratch/$harness/replay.log" 2>&1 ||
+     ! "$fuzzer" "$fuzz_scratch/$harness/corpus" "${dict[@]}" -max_total_time=30 -timeout=10 \
+         -rss_limit_mb=4096 -print_final_stats=1 -artifact_prefix="$fuzz_scratch/$harness/" \
+         > "$fuzz_scratch/$harness/fuzz.log" 2>&1; then
+    tail -n 60 "$fuzz_scratch/$harness"/*.log >&2 || true
+    echo "argus: fuzz_$harness found a bug; the input is in $fuzz_scratch/$harness/ (crash-*," \
+         "leak-*, timeout-*, oom-*); tests/fuzz/README.md says how to replay it" >&2
+    exit 1
+  fi
+  grep -E '^#[0-9]+[[:space:]]+DONE' "$fuzz_scratch/$harness/fuzz.log" || true
+done
+rm -rf "$fuzz_scratch"
+stage_end fuzz
 check_budgets
 echo "== all tests passed ($(stage_time))"

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <array>
 #include <cerrno>
 #include <cstdio>
@@ -15,6 +16,7 @@
 
 #include "config/mapping_reader.hpp"
 #include "config/utf8_text.hpp"
+#include "config/yaml_guards.hpp"
 #include "config/yaml_reader.hpp"
 
 namespace argus::world {
@@ -44,7 +46,9 @@ const char* to_string(portal_kind kind) noexcept {
 namespace {
 
 using config::mapping_reader;
+using config::nul_byte;
 using config::problem;
+using config::refuse_stuck_documents;
 using config::scenario_error;
 using config::value_bounds;
 using config::yaml_reader;
@@ -386,9 +390,12 @@ class layout_parser {
 layout parse_layout(std::string_view yaml_text, const std::string& source_name) {
   if (const auto bad = config::first_non_utf8(yaml_text))
     throw scenario_error({config::not_utf8(source_name, *bad)});
+  if (auto nul = nul_byte(source_name, yaml_text)) throw scenario_error({std::move(*nul)});
   std::vector<YAML::Node> documents;
   try {
-    documents = YAML::LoadAll(std::string{yaml_text});
+    const std::string text{yaml_text};
+    refuse_stuck_documents(text);
+    documents = YAML::LoadAll(text);
   } catch (const YAML::Exception& error) {
     throw scenario_error(
         {problem{source_name, error.mark.line + 1, error.mark.column + 1, {}, error.msg}});

@@ -103,7 +103,8 @@ vec2 station::direction_to(int field, const vec2& p) const {
   // Corner k of the stencil is cell (x0 + k % 2, y0 + k / 2).
   double f[4];
   for (int k = 0; k < 4; ++k) f[k] = patch[1 + k / 2][1 + k % 2];
-  auto centre_of = [&](int k) {
+  // x0 and y0 captured by name: clang before 16 cannot capture structured bindings.
+  auto centre_of = [&, x0 = x0, y0 = y0](int k) {
     return vec2{(x0 + k % 2 + 0.5) * cell, (y0 + k / 2 + 0.5) * cell};
   };
   // The corners on this side of every wall: the one whose cell holds `p` (or, where that cell

@@ -1,7 +1,9 @@
 #include "config/scenario_loader.hpp"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
+#include <cstdlib>
 #include <filesystem>
 
 namespace argus::config {
@@ -293,6 +295,36 @@ TEST(scenario_loader, rejects_a_second_document) {
   const auto problems = problems_of([] { parse_scenario("name: a\n---\nname: b\n", "two.yaml"); });
   ASSERT_EQ(problems.size(), 1u);
   EXPECT_EQ(problems[0], (problem{"two.yaml", 3, 1, "", "expected one YAML document, got 2"}));
+}
+
+// yaml-cpp 0.7 never finishes reading a ',' outside a flow collection (jbeder/yaml-cpp#1040):
+// LoadAll yields empty documents until memory runs out. Found by tests/fuzz/scenario_yaml.
+bool stray_commas_are_syntax_errors() {
+  const auto alone = problems_of([] { parse_scenario(",", "comma.yaml"); });
+  const auto after_a_list = problems_of([] { parse_scenario("- 1\n,\n", "comma.yaml"); });
+  return alone == std::vector{problem{"comma.yaml", 1, 1, "", "unexpected ','"}} &&
+         after_a_list == std::vector{problem{"comma.yaml", 2, 1, "", "unexpected ','"}};
+}
+
+// In a child process with an alarm, so that a regression fails in seconds instead of filling
+// memory.
+TEST(scenario_loader, a_stray_comma_is_a_syntax_error_not_a_hang) {
+  EXPECT_EXIT(
+      {
+        alarm(20);
+        std::exit(stray_commas_are_syntax_errors() ? 0 : 1);
+      },
+      ::testing::ExitedWithCode(0), "");
+}
+
+// yaml-cpp reads a NUL as an escape even outside quotes: "pe NUL _x" gave the name "pe", a lone
+// 0xA0 byte and "x", which is not UTF-8, so that to_yaml's file of it no longer loaded. Found by
+// tests/fuzz/scenario_yaml.
+TEST(scenario_loader, a_nul_byte_is_refused_with_its_place) {
+  const auto problems = problems_of(
+      [] { parse_scenario(std::string("run: {seed: 1}\nname: pe\0_x\n", 27), "nul.yaml"); });
+  EXPECT_EQ(problems, (std::vector{problem{"nul.yaml", 2, 9, "",
+                                           "unexpected NUL byte (YAML allows none in a file)"}}));
 }
 
 // The pixel trackers' kernel sizes: around the target by default, the paper's on request.

@@ -3,6 +3,9 @@
 #include "world/layout_loader.hpp"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cstdlib>
 
 #include "config/scenario_loader.hpp"
 
@@ -136,6 +139,34 @@ TEST(layout_loader, no_entrance_and_missing_file) {
   const auto syntax = problems_of("regions: [\n");
   ASSERT_EQ(syntax.size(), 1u);
   EXPECT_GT(syntax[0].line, 0);
+}
+
+// yaml-cpp 0.7 never finishes reading a ',' outside a flow collection (jbeder/yaml-cpp#1040):
+// LoadAll yields empty documents until memory runs out. Found by tests/fuzz/layout_yaml. In a
+// child process with an alarm, so that a regression fails in seconds instead of filling memory.
+TEST(layout_loader, a_stray_comma_is_a_syntax_error_not_a_hang) {
+  EXPECT_EXIT(
+      {
+        alarm(20);
+        const auto alone = problems_of(",");
+        const auto after_a_list = problems_of("- [0, 0]\n,\n");
+        const bool as_expected = alone.size() == 1 && alone[0].line == 1 && alone[0].column == 1 &&
+                                 alone[0].message == "unexpected ','" && after_a_list.size() == 1 &&
+                                 after_a_list[0].line == 2 && after_a_list[0].column == 1 &&
+                                 after_a_list[0].message == "unexpected ','";
+        std::exit(as_expected ? 0 : 1);
+      },
+      ::testing::ExitedWithCode(0), "");
+}
+
+// yaml-cpp reads a NUL as an escape even outside quotes ("a NUL _b" gives a lone 0xA0 byte,
+// not UTF-8), as tests/fuzz/scenario_yaml found for scenarios: layouts refuse it alike.
+TEST(layout_loader, a_nul_byte_is_refused_with_its_place) {
+  const auto problems = problems_of(std::string(minimal) + std::string("name: a\0_b\n", 11));
+  ASSERT_EQ(problems.size(), 1u);
+  EXPECT_EQ(problems[0].line, 5);
+  EXPECT_EQ(problems[0].column, 8);
+  EXPECT_EQ(problems[0].message, "unexpected NUL byte (YAML allows none in a file)");
 }
 
 }  // namespace
