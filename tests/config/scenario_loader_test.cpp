@@ -302,8 +302,13 @@ TEST(scenario_loader, rejects_a_second_document) {
 bool stray_commas_are_syntax_errors() {
   const auto alone = problems_of([] { parse_scenario(",", "comma.yaml"); });
   const auto after_a_list = problems_of([] { parse_scenario("- 1\n,\n", "comma.yaml"); });
-  return alone == std::vector{problem{"comma.yaml", 1, 1, "", "unexpected ','"}} &&
-         after_a_list == std::vector{problem{"comma.yaml", 2, 1, "", "unexpected ','"}};
+  // Field by field: comparing with braced temporaries trips g++ 12's -Wmaybe-uninitialized
+  // at -O1 (the ASan build's).
+  const auto is = [](const std::vector<problem>& p, int line) {
+    return p.size() == 1 && p[0].file == "comma.yaml" && p[0].line == line && p[0].column == 1 &&
+           p[0].field.empty() && p[0].message == "unexpected ','";
+  };
+  return is(alone, 1) && is(after_a_list, 2);
 }
 
 // In a child process with an alarm, so that a regression fails in seconds instead of filling
