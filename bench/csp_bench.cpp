@@ -1,8 +1,8 @@
 // CSP conflict resolution (Section IV-B, Table 1): time per instance of AllSolv, BestSolv (the
-// paper's rule), optimistic_solv and bound_solv on Table 1's two settings (protocol/csp_table1.hpp: 2 groups x 3 sensors, 12 or
-// 16 relevant sensors each), cycling over 100 seeded instances. Counters: nodes explored and
-// backtracks per instance. Targets (issue 14): BestSolv at most 2% of AllSolv's nodes,
-// bound_solv at least 10x fewer than BestSolv, each under 1 ms per instance.
+// paper's rule), optimistic_solv and bound_solv on Table 1's two settings (protocol/csp_table1.hpp:
+// 2 groups x 3 sensors, 12 or 16 relevant sensors each), cycling over 100 seeded instances.
+// Counters: nodes explored and backtracks per instance. Targets (issue 14): BestSolv at most 2% of
+// AllSolv's nodes, bound_solv at least 10x fewer than BestSolv, each under 1 ms per instance.
 // `argus csp table1` prints the same experiment as a table with the paper's figures.
 #include <benchmark/benchmark.h>
 

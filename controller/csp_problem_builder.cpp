@@ -59,17 +59,7 @@ built_csp build_csp(std::vector<protocol::csp_data> groups, double threshold) {
 }
 
 protocol::csp_solver_kind solver_kind(config::conflict_solver solver) {
-  switch (solver) {
-    case config::conflict_solver::all_solv:
-      return protocol::csp_solver_kind::all_solv;
-    case config::conflict_solver::best_solv:
-      return protocol::csp_solver_kind::best_solv;
-    case config::conflict_solver::optimistic_solv:
-      return protocol::csp_solver_kind::optimistic_solv;
-    case config::conflict_solver::bound_solv:
-      return protocol::csp_solver_kind::bound_solv;
-  }
-  return protocol::csp_solver_kind::optimistic_solv;
+  return protocol::solver_kind_of(solver);  // one mapping, where the solvers are
 }
 
 }  // namespace argus::controller
