@@ -367,6 +367,10 @@ struct controller_settings {
   /// camera zoomed to, not the few pixels of the operator's wide view. false, the default: the
   /// paper's, the task keeps the signature of the operator's pick.
   bool share_model = false;
+  /// Added, in a conflict's CSP, to each camera's relevance to the group it serves (its leader
+  /// included): a reassignment must be worth more than the tracks it breaks. 0: the paper's,
+  /// the sum of relevances alone (bench/RESULTS.md, "Conflicts as the paper says").
+  double conflict_stay_bonus = 0.0;
   /// Fig. 15's "random interval": uniform in [0, this].
   seconds demotion_backoff_max{1.0};
   friend bool operator==(const controller_settings&, const controller_settings&) = default;

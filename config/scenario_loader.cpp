@@ -86,7 +86,7 @@ constexpr std::array<std::string_view, 13> network_keys{"loss_probability",
                                                         "hello_interval",
                                                         "neighbour_timeout",
                                                         "unicast"};
-constexpr std::array<std::string_view, 29> controller_keys{"wait_timeout",
+constexpr std::array<std::string_view, 30> controller_keys{"wait_timeout",
                                                            "search_timeout",
                                                            "min_relevance",
                                                            "heartbeat_interval",
@@ -111,6 +111,7 @@ constexpr std::array<std::string_view, 29> controller_keys{"wait_timeout",
                                                            "relevance_look_time",
                                                            "bid_evidence_time",
                                                            "bid_min_found_fraction",
+                                                           "conflict_stay_bonus",
                                                            "bid_min_mean_score",
                                                            "track_while_bidding",
                                                            "share_model",
@@ -506,6 +507,7 @@ class scenario_parser {
     controller.read("relevance_look_time", out.relevance_look_time, positive);
     controller.read("bid_evidence_time", out.bid_evidence_time, non_negative);
     controller.read("bid_min_found_fraction", out.bid_min_found_fraction, probability);
+    controller.read("conflict_stay_bonus", out.conflict_stay_bonus, probability);
     controller.read("bid_min_mean_score", out.bid_min_mean_score, probability);
     controller.read("track_while_bidding", out.track_while_bidding);
     controller.read("share_model", out.share_model);

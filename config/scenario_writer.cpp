@@ -264,6 +264,7 @@ std::string to_yaml(const scenario& s) {
   out.entry(1, "bid_min_mean_score", number(controller.bid_min_mean_score));
   out.entry(1, "track_while_bidding", boolean(controller.track_while_bidding));
   out.entry(1, "share_model", boolean(controller.share_model));
+  out.entry(1, "conflict_stay_bonus", number(controller.conflict_stay_bonus));
   out.entry(1, "demotion_backoff_max", duration(controller.demotion_backoff_max));
 
   out.line(0, "sensing:");

@@ -114,7 +114,7 @@ double camera_controller::relevance_of(const cv::Rect2d& box, bool busy) const {
 }
 
 bool camera_controller::locked() const {
-  return task_ && now_ - joined_ < config::to_ticks(settings_.min_task_duration, tick_);
+  return task_ && now_ < pinned_until_;
 }
 
 void camera_controller::send(int to, protocol::group_message m, controller_output& out) const {
@@ -242,10 +242,42 @@ void camera_controller::weigh_evidence(pending_query& p, const look_result& r,
                         .busy = bid.busy,
                         .found_fraction = found_fraction,
                         .mean_score = mean_score});
+  // Section IV-B: a node that belongs to a group and is queried by another, or that is queried
+  // by two groups, initiates conflict resolution.
+  const protocol::conflict_claim claim{
+      .task = bid.task, .leader = bid.leader, .term = bid.term, .relevance = bid.relevance};
+  if (bid.locked) return;  // placed by a conflict's result: not to be moved yet
+  if (task_) {
+    report_conflict(
+        {{.task = task_->task, .leader = leader_, .term = term_, .relevance = relevance(now_)},
+         claim},
+        out);
+    return;
+  }
+  for (const auto& other : pending_) {
+    if (&other == &p || !other.bid_sent || other.task.task == p.task.task) continue;
+    report_conflict({{.task = other.task.task,
+                      .leader = other.leader,
+                      .term = other.term,
+                      .relevance = other.relevance},
+                     claim},
+                    out);
+    return;
+  }
 }
 
 void camera_controller::take_query(const operator_query& q, controller_output& out) {
   if (task_ && task_->task == q.task.task) return;
+  // Taken from a group by the operator, this node is claimed by two groups: it tells the
+  // groups' conflict solver, so that the two groups decide between them which of their cameras
+  // carries which task (Fig. 19).
+  // A leader first gives its group to its best member, so that the task it leaves keeps a
+  // leader (the member would otherwise wait out the leader failure timeout).
+  if (task_ && role_ == group_role::leader && collaborate_) hand_over(-1.0, out, true);
+  std::optional<protocol::conflict_claim> was;
+  if (task_ && role_ == group_role::member && collaborate_)
+    was = protocol::conflict_claim{
+        .task = task_->task, .leader = leader_, .term = term_, .relevance = relevance(now_)};
   if (task_) leave_task("operator", out);
   pending_.clear();
   start_task(q.task, group_role::leader, me_.id, 0.0, now_, next_term(q.task.task), out);
@@ -255,6 +287,13 @@ void camera_controller::take_query(const operator_query& q, controller_output& o
                                  .max_cameras = q.task.max_cameras,
                                  .relevance = seen_relevance_,
                                  .term = term_});
+  if (was)
+    report_conflict({*was,
+                     {.task = q.task.task,
+                      .leader = me_.id,
+                      .term = term_,
+                      .relevance = std::min(1.0, std::max(0.0, seen_relevance_))}},
+                    out);
 }
 
 // --- messages --------------------------------------------------------------------------------
@@ -275,6 +314,8 @@ void camera_controller::take_message(const received_message& m, controller_outpu
           on_handover(msg, out);
         } else if constexpr (std::is_same_v<T, protocol::demotion>) {
           on_demotion(msg, out);
+        } else if constexpr (std::is_same_v<T, protocol::csp_conflict>) {
+          on_csp_conflict(msg, out);
         } else if constexpr (std::is_same_v<T, protocol::csp_query>) {
           on_csp_query(m.origin, msg, out);
         } else if constexpr (std::is_same_v<T, protocol::csp_data>) {
@@ -397,6 +438,7 @@ void camera_controller::on_status(int from, const protocol::status& s, controlle
     return;
   }
   heard_term(s.task, s.term);
+  if (last_result_ && now_ < last_result_until_ && !s.leaving) retell_place(s, out);
   if (!task_ || s.task != task_->task || s.sender == me_.id) return;
   // Terms: a status of another leadership older than this node's is stale (the leader handed
   // over or was taken for failed, its statuses still in flight or echoed by nodes that have
@@ -578,12 +620,14 @@ void camera_controller::start_task(const protocol::task_description& task, group
   relayed_by_.clear();
   handed_over_at_.reset();
   next_auction_at_ = now_;
+  pinned_until_ = 0;
 }
 
 void camera_controller::forget_group() {
   members_.clear();
   auction_.reset();
   csp_.reset();
+  csp_reply_.reset();
   negotiator_.reset();
 }
 
@@ -793,7 +837,16 @@ void camera_controller::lead(controller_output& out) {
   if (!task_ || role_ != group_role::leader) return;
   // The baseline without collaboration: the tasked camera never recruits.
   if (!collaborate_) return;
-  if (csp_ && (csp_->waiting.empty() || now_ >= csp_->deadline)) solve_csp(out);
+  if (csp_ && csp_->own_ready && csp_->waiting.empty()) {
+    solve_csp(out);
+  } else if (csp_ && now_ >= csp_->deadline) {
+    // A group that did not answer cannot be settled without: its cameras are its own. The
+    // conflict comes back with the next claim.
+    std::vector<task_id> missing;
+    for (const auto& [leader, t] : csp_->waiting) missing.push_back(t);
+    emit(out, events::csp_abandoned{.task = task_->task, .missing = std::move(missing)});
+    csp_.reset();
+  }
   if (auction_ && now_ >= auction_->closes_at) {
     close_auction(out);
   } else if (!auction_ && !csp_ && now_ >= next_auction_at_) {
@@ -857,19 +910,32 @@ void camera_controller::open_auction(controller_output& out) {
 }
 
 void camera_controller::close_auction(controller_output& out) {
-  std::vector<protocol::relevance_bid> free, contended;
+  std::vector<protocol::relevance_bid> free;
   last_bids_.clear();
+  if (auction_->for_conflict) {
+    // It gathered relevances: the CSP, not this auction, chooses.
+    for (const auto& [bidder, b] : auction_->bids)
+      if (bidder != me_.id && members_.count(bidder) == 0) last_bids_.push_back(b);
+    emit(out, events::auction_closed{.task = task_->task,
+                                     .auction = auction_->id,
+                                     .bids = auction_->bids.size(),
+                                     .chosen = {}});
+    auction_.reset();
+    next_auction_at_ = now_ + config::to_ticks(settings_.auction_interval, tick_);
+    if (csp_reply_) {
+      send(csp_reply_->solver,
+           own_csp_data(csp_reply_->round, {task_->task, csp_reply_->solver_task}), out);
+      csp_reply_.reset();
+    }
+    if (csp_) csp_->own_ready = true;
+    return;
+  }
   for (const auto& [bidder, b] : auction_->bids) {
     if (bidder == me_.id || members_.count(bidder) != 0) continue;
     last_bids_.push_back(b);
-    if (!b.busy) {
-      free.push_back(b);
-    } else if (!b.locked) {
-      contended.push_back(b);
-    }
+    if (!b.busy) free.push_back(b);
   }
   std::sort(free.begin(), free.end(), better_bid);
-  std::sort(contended.begin(), contended.end(), better_bid);
   const auto size = 1 + members_.size();
   std::size_t slots = task_->max_cameras > size ? task_->max_cameras - size : 0;
   // Handoff: a leader losing its target takes one camera beyond the group's size.
@@ -886,9 +952,8 @@ void camera_controller::close_auction(controller_output& out) {
   auction_.reset();
   next_auction_at_ = now_ + config::to_ticks(settings_.auction_interval, tick_);
   for (int c : chosen) invite(c, false, out);
-  // Section IV-B: busy cameras only when too few are free, and then through the CSP.
-  if (size + chosen.size() < task_->min_cameras && !contended.empty())
-    start_csp(std::move(contended), out);
+  // Section IV-B: busy cameras only through the CSP, which each busy bidder initiates itself
+  // (weigh_evidence).
 }
 
 void camera_controller::invite(int camera, bool reassign, controller_output& out) {
@@ -920,47 +985,114 @@ protocol::status camera_controller::own_status() const {
   return s;
 }
 
-protocol::csp_data camera_controller::own_csp_data(std::uint32_t round) const {
+protocol::csp_data camera_controller::own_csp_data(std::uint32_t round,
+                                                   const std::set<task_id>& tasks) const {
   protocol::csp_data d;
-  d.task = task_->task;
+  d.task = *task_;
   d.leader = me_.id;
   d.term = term_;
   d.round = round;
-  d.min_cameras = task_->min_cameras;
-  d.max_cameras = task_->max_cameras;
-  const auto min_task = config::to_ticks(settings_.min_task_duration, tick_);
+  d.candidates.push_back({me_.id, relevance(now_)});
+  d.members.push_back(me_.id);
+  if (now_ < pinned_until_) d.pinned.push_back(me_.id);
   for (const auto& [m, rec] : members_) {
     d.candidates.push_back({m, rec.relevance});
-    if (now_ - rec.joined < min_task) d.pinned.push_back(m);
+    d.members.push_back(m);
+    if (now_ < rec.pinned_until) d.pinned.push_back(m);
   }
-  for (const auto& b : last_bids_)
-    if (members_.count(b.bidder) == 0 && !b.locked) d.candidates.push_back({b.bidder, b.relevance});
+  // A bidder busy in a group outside the conflict is that group's to give, not this one's.
+  for (const auto& b : last_bids_) {
+    const bool elsewhere = b.busy && (!b.other_task || tasks.count(*b.other_task) == 0);
+    if (members_.count(b.bidder) == 0 && !b.locked && !elsewhere)
+      d.candidates.push_back({b.bidder, b.relevance});
+  }
   return d;
 }
 
-void camera_controller::start_csp(std::vector<protocol::relevance_bid> contended,
-                                  controller_output& out) {
+void camera_controller::report_conflict(std::vector<protocol::conflict_claim> claims,
+                                        controller_output& out) {
+  std::sort(claims.begin(), claims.end(),
+            [](const auto& a, const auto& b) { return a.task < b.task; });
+  std::vector<task_id> tasks;
+  for (const auto& c : claims) tasks.push_back(c.task);
+  const int solver = claims.front().leader;
+  emit(out, events::conflict_reported{.task = claims.front().task, .tasks = tasks, .to = solver});
+  protocol::csp_conflict c{.camera = me_.id, .claims = std::move(claims)};
+  if (solver == me_.id) {
+    on_csp_conflict(c, out);
+  } else {
+    send(solver, std::move(c), out);
+  }
+}
+
+void camera_controller::on_csp_conflict(const protocol::csp_conflict& c, controller_output& out) {
+  if (!collaborate_ || !task_ || role_ != group_role::leader || c.claims.empty()) return;
+  const auto lowest = std::min_element(c.claims.begin(), c.claims.end(),
+                                       [](auto& a, auto& b) { return a.task < b.task; });
+  if (lowest->task != task_->task) return;
+  std::map<int, task_id> leaders;
+  std::map<task_id, std::vector<protocol::camera_relevance>> said;
+  for (const auto& k : c.claims) {
+    if (cancelled_.count(k.task) != 0) continue;
+    said[k.task].push_back({c.camera, k.relevance});
+    if (k.task != task_->task && k.leader != me_.id) leaders[k.leader] = k.task;
+  }
+  if (leaders.empty()) return;
+  if (csp_) {
+    // One conflict at a time: what is said while its relevances are still being gathered
+    // joins it, if it is about its groups.
+    if (csp_->own_ready) return;
+    for (const auto& [t, cameras] : said)
+      if (csp_->tasks.count(t) != 0)
+        csp_->claims[t].insert(csp_->claims[t].end(), cameras.begin(), cameras.end());
+    return;
+  }
+  start_csp(leaders, said, out);
+}
+
+void camera_controller::start_csp(
+    const std::map<int, task_id>& leaders,
+    const std::map<task_id, std::vector<protocol::camera_relevance>>& claims,
+    controller_output& out) {
+  std::set<task_id> tasks{task_->task};
+  for (const auto& [leader, t] : leaders) tasks.insert(t);
+  std::set<int> cameras;
+  for (const auto& [t, said] : claims)
+    for (const auto& c : said) cameras.insert(c.camera);
+  // Table 2's minimum duration for an assigned task: a conflict just settled is not settled
+  // again until then, unless a task or a camera joins it.
+  if (settled_ && settled_->tasks == tasks &&
+      now_ - settled_->at < ticks(settings_.min_task_duration) &&
+      std::includes(settled_->cameras.begin(), settled_->cameras.end(), cameras.begin(),
+                    cameras.end()))
+    return;
   csp_round round;
   round.round = next_csp_round_++;
-  round.deadline = now_ + 2 * ticks(message_timeout_);
-  for (const auto& b : contended)
-    if (b.other_task && b.other_leader != me_.id) round.waiting[b.other_leader] = *b.other_task;
-  if (round.waiting.empty()) return;
-  std::vector<task_id> tasks;
-  for (const auto& [leader, t] : round.waiting) {
-    tasks.push_back(t);
+  // The others answer when their gathering auction closes.
+  round.deadline = now_ + ticks(settings_.auction_window) + 2 * ticks(message_timeout_);
+  round.waiting = leaders;
+  round.tasks = tasks;
+  round.claims = claims;
+  for (const auto& [leader, t] : leaders)
     send(leader,
          protocol::csp_query{
              .solver_task = task_->task, .solver = me_.id, .term = term_, .round = round.round},
          out);
-  }
-  std::vector<int> cameras;
-  for (const auto& b : contended) cameras.push_back(b.bidder);
+  std::vector<task_id> others;
+  for (task_id t : tasks)
+    if (t != task_->task) others.push_back(t);
   emit(out, events::conflict{.task = task_->task,
-                             .with_tasks = {tasks.begin(), tasks.end()},
+                             .with_tasks = std::move(others),
                              .cameras = {cameras.begin(), cameras.end()}});
-  round.bids = std::move(contended);
   csp_ = std::move(round);
+  open_gathering(out);
+}
+
+void camera_controller::open_gathering(controller_output& out) {
+  // Fig. 19: "the two cameras pan out to search for the latter" — every camera of the groups
+  // hears every task's query, and those that find its target say how relevant they are.
+  if (!auction_) open_auction(out);
+  auction_->for_conflict = true;
 }
 
 void camera_controller::on_csp_query(int from, const protocol::csp_query& q,
@@ -972,7 +1104,8 @@ void camera_controller::on_csp_query(int from, const protocol::csp_query& q,
     emit(out, events::csp_yielded{.task = task_->task, .to_task = q.solver_task});
     csp_.reset();
   }
-  send(from, own_csp_data(q.round), out);
+  csp_reply_ = csp_reply{.solver = from, .solver_task = q.solver_task, .round = q.round};
+  open_gathering(out);
 }
 
 void camera_controller::on_csp_data(const protocol::csp_data& d, controller_output&) {
@@ -981,67 +1114,175 @@ void camera_controller::on_csp_data(const protocol::csp_data& d, controller_outp
 }
 
 void camera_controller::solve_csp(controller_output& out) {
-  auto own = own_csp_data(csp_->round);
-  for (const auto& b : csp_->bids) own.candidates.push_back({b.bidder, b.relevance});
-  std::vector<protocol::csp_data> groups{own};
-  for (const auto& d : csp_->data) groups.push_back(d);
-  const auto built = build_csp(groups, settings_.membership_relevance_threshold);
+  auto claimed = [&](protocol::csp_data d) {
+    if (auto it = csp_->claims.find(d.task.task); it != csp_->claims.end())
+      d.candidates.insert(d.candidates.end(), it->second.begin(), it->second.end());
+    return d;
+  };
+  std::vector<protocol::csp_data> groups{claimed(own_csp_data(csp_->round, csp_->tasks))};
+  for (const auto& d : csp_->data) groups.push_back(claimed(d));
+  const auto built =
+      build_csp(groups, settings_.membership_relevance_threshold, settings_.conflict_stay_bonus);
   const auto solution =
       protocol::solve(built.problem, solver_kind(settings_.solver), run_csp_limits);
-  events::task_counts minima;
-  for (std::size_t g = 0; g < built.groups.size(); ++g)
-    minima.emplace_back(built.groups[g].task, g < solution.minima.size() ? solution.minima[g] : 0u);
-  emit(out, events::csp_solved{.task = task_->task,
-                               .solver = std::string(config::yaml_name(settings_.solver)),
-                               .groups = built.groups.size(),
-                               .cameras = built.cameras.size(),
-                               .weight = solution.weight,
-                               .nodes_explored = solution.nodes_explored,
-                               .backtracks = solution.backtracks,
-                               .relaxed = solution.relaxed,
-                               .minima = std::move(minima),
-                               .optimal = solution.proven_optimal});
+  const auto plan = built.plan(solution);
+  events::csp_solved e{.task = task_->task,
+                       .solver = std::string(config::yaml_name(settings_.solver)),
+                       .groups = built.groups.size(),
+                       .cameras = built.cameras.size(),
+                       .weight = solution.weight,
+                       .nodes_explored = solution.nodes_explored,
+                       .backtracks = solution.backtracks,
+                       .relaxed = solution.relaxed,
+                       .minima = {},
+                       .optimal = solution.proven_optimal,
+                       .tasks = {},
+                       .camera_ids = built.cameras,
+                       .min_cameras = {},
+                       .max_cameras = {},
+                       .relevance = {},
+                       .staying = built.fixed,
+                       .leaders = {},
+                       .assigned = {}};
   for (std::size_t g = 0; g < built.groups.size(); ++g) {
-    const auto cameras = built.assigned(solution, g);
-    const auto& group = built.groups[g];
-    if (group.leader == me_.id) {
-      apply_assignment(cameras, out);
-    } else {
-      const auto minimum = g < solution.minima.size() ? solution.minima[g] : 0u;
-      send(group.leader,
-           protocol::csp_result{.task = group.task,
-                                .solver = me_.id,
-                                .term = term_,
-                                .cameras = cameras,
-                                .minimum = static_cast<std::uint16_t>(minimum)},
-           out);
-    }
+    const auto& group = built.problem.groups[g];
+    e.tasks.push_back(built.groups[g].task.task);
+    e.minima.emplace_back(built.groups[g].task.task,
+                          g < solution.minima.size() ? solution.minima[g] : 0u);
+    e.min_cameras.push_back(group.min_cameras);
+    e.max_cameras.push_back(group.max_cameras);
+    std::vector<events::fixed<6>> row;
+    for (double r : group.relevance) row.emplace_back(std::isnan(r) ? -1.0 : r);
+    e.relevance.push_back(std::move(row));
+    e.leaders.push_back(plan[g].leader);
+    std::vector<int> cameras;
+    for (const auto& m : plan[g].members) cameras.push_back(m.camera);
+    e.assigned.push_back(std::move(cameras));
   }
+  emit(out, std::move(e));
+  protocol::csp_result r{.solver_task = task_->task,
+                         .solver = me_.id,
+                         .term = term_,
+                         .round = csp_->round,
+                         .groups = plan};
+  // Every camera the solver weighed, and every leader: each takes its own place.
+  std::set<int> told;
+  for (std::size_t g = 0; g < built.groups.size(); ++g) {
+    told.insert(built.groups[g].leader);
+    for (const auto& c : built.reported[g]) told.insert(c.camera);
+  }
+  settled_ = settled_conflict{.tasks = csp_->tasks, .cameras = told, .at = now_};
   csp_.reset();
+  for (int c : told)
+    if (c != me_.id) send(c, r, out);
+  take_place(r, out);
+}
+
+void camera_controller::retell_place(const protocol::status& s, controller_output& out) {
+  for (const auto& g : last_result_->groups) {
+    const bool named =
+        g.leader == s.sender || std::any_of(g.members.begin(), g.members.end(),
+                                            [&](const auto& m) { return m.camera == s.sender; });
+    if (!named) continue;
+    const bool in_place = s.task == g.task.task && (s.leader == g.leader || s.term > g.term);
+    if (in_place) return;
+    // It is where it was: the result did not reach it (lost). Told again, at most twice.
+    auto& told = results_retold_[s.sender];
+    if (told >= 2) return;
+    ++told;
+    send(s.sender, *last_result_, out);
+    return;
+  }
 }
 
 void camera_controller::on_csp_result(const protocol::csp_result& r, controller_output& out) {
-  if (!task_ || role_ != group_role::leader || r.task != task_->task || csp_) return;
-  emit(out, events::csp_applied{.task = r.task, .solver_camera = r.solver, .cameras = r.cameras});
-  apply_assignment(r.cameras, out);
+  if (results_taken_.count({r.solver, r.round}) != 0) return;
+  take_place(r, out);
 }
 
-void camera_controller::apply_assignment(const std::vector<int>& cameras, controller_output& out) {
-  auto assigned = [&](int c) {
-    return std::find(cameras.begin(), cameras.end(), c) != cameras.end();
-  };
-  for (auto it = members_.begin(); it != members_.end();) {
-    if (assigned(it->first)) {
-      ++it;
-      continue;
-    }
-    emit(out,
-         events::member_change{
-             .task = task_->task, .member = it->first, .reason = "reassigned", .added = false});
-    it = members_.erase(it);
+void camera_controller::take_place(const protocol::csp_result& r, controller_output& out) {
+  results_taken_.insert({r.solver, r.round});
+  last_result_ = r;
+  last_result_until_ = now_ + ticks(settings_.min_task_duration);
+  results_retold_.clear();
+  const protocol::csp_assignment* mine = nullptr;
+  bool concerned = false;
+  for (const auto& g : r.groups) {
+    if (cancelled_.count(g.task.task) != 0) continue;
+    heard_term(g.task.task, g.term);
+    if (task_ && task_->task == g.task.task) concerned = true;
+    const bool member = std::any_of(g.members.begin(), g.members.end(),
+                                    [&](const auto& m) { return m.camera == me_.id; });
+    if (g.leader == me_.id || member) mine = &g;
   }
-  for (int c : cameras)
-    if (c != me_.id && members_.count(c) == 0) invite(c, true, out);
+  // A result older than the leadership this node follows in its task is not its to take.
+  if (task_ && mine && mine->task.task == task_->task && term_ > mine->term) return;
+  if (!mine) {
+    if (concerned) leave_task("reassigned", out);
+    return;
+  }
+  const auto t = mine->task.task;
+  std::vector<int> cameras{mine->leader};
+  for (const auto& m : mine->members) cameras.push_back(m.camera);
+  emit(out, events::csp_applied{.task = t, .solver_camera = r.solver, .cameras = cameras});
+  const bool same_task = task_ && task_->task == t;
+  const auto pin = now_ + ticks(settings_.min_task_duration);
+  if (mine->leader == me_.id) {
+    if (!same_task) {
+      if (task_) leave_task("reassigned", out);
+      pending_.clear();
+      start_task(mine->task, group_role::leader, me_.id, mine->relevance, now_, mine->term, out);
+      pinned_until_ = pin;
+      emit(out, events::joined{.task = t, .leader = me_.id, .reassign = true, .term = term_});
+      emit_leader_changed(me_.id, mine->previous, "conflict", out);
+    } else if (role_ != group_role::leader) {
+      role_ = group_role::leader;
+      leader_ = me_.id;
+      term_ = mine->term;
+      handed_over_at_.reset();
+      forget_group();
+      pinned_until_ = pin;
+      emit_leader_changed(me_.id, mine->previous, "conflict", out);
+    } else {
+      term_ = std::max(term_, mine->term);
+    }
+    for (auto it = members_.begin(); it != members_.end();) {
+      const bool kept = std::any_of(mine->members.begin(), mine->members.end(),
+                                    [&](const auto& m) { return m.camera == it->first; });
+      if (kept) {
+        ++it;
+        continue;
+      }
+      emit(out, events::member_change{
+                    .task = t, .member = it->first, .reason = "reassigned", .added = false});
+      it = members_.erase(it);
+    }
+    for (const auto& m : mine->members) {
+      if (members_.count(m.camera) != 0) continue;
+      members_[m.camera] = member_record{m.relevance, now_, now_, pin};
+      emit(out, events::member_change{
+                    .task = t, .member = m.camera, .reason = "conflict", .added = true});
+    }
+    send(protocol::broadcast, own_status(), out);
+    return;
+  }
+  if (same_task) {
+    if (role_ == group_role::member && leader_ == mine->leader) {
+      term_ = std::max(term_, mine->term);
+      return;
+    }
+    follow_leader(mine->leader, mine->term, "conflict", out);
+    return;
+  }
+  double r_mine = 0.0;
+  for (const auto& m : mine->members)
+    if (m.camera == me_.id) r_mine = m.relevance;
+  if (task_) leave_task("reassigned", out);
+  pending_.clear();
+  start_task(mine->task, group_role::member, mine->leader, r_mine, now_, mine->term, out);
+  pinned_until_ = pin;
+  emit(out, events::joined{.task = t, .leader = mine->leader, .reassign = true, .term = term_});
+  send(protocol::broadcast, own_status(), out);
 }
 
 // --- the next frame --------------------------------------------------------------------------

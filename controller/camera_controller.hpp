@@ -86,18 +86,41 @@ class camera_controller final : public strategy {
     double relevance = 0.0;
     std::int64_t last_status = 0;
     std::int64_t joined = 0;
+    // Placed here by a conflict's result: not given up to another conflict before then.
+    std::int64_t pinned_until = 0;
   };
   struct auction_state {
     std::uint32_t id = 0;
     std::int64_t closes_at = 0;
     std::map<int, protocol::relevance_bid> bids;
+    // Opened to gather relevances for a conflict (Section IV-B): it invites nobody.
+    bool for_conflict = false;
   };
+  // A conflict this leader centralises (Fig. 14).
   struct csp_round {
     std::uint32_t round = 0;
     std::int64_t deadline = 0;
     std::map<int, protocol::task_id> waiting;  // leader -> its task
+    std::set<task_id> tasks;                   // its own and the others'
     std::vector<protocol::csp_data> data;
-    std::vector<protocol::relevance_bid> bids;  // the bids that raised the conflict
+    // What the cameras that raised it said of their relevance to each task.
+    std::map<task_id, std::vector<protocol::camera_relevance>> claims;
+    // Its own gathering auction has closed.
+    bool own_ready = false;
+  };
+  // A conflict another leader centralises, answered when this leader's gathering auction
+  // closes.
+  struct csp_reply {
+    int solver = 0;
+    task_id solver_task = 0;
+    std::uint32_t round = 0;
+  };
+  // The last conflict this leader settled: the same one is not settled again within the
+  // minimum task duration unless a task or camera joins it.
+  struct settled_conflict {
+    std::set<task_id> tasks;
+    std::set<int> cameras;
+    std::int64_t at = 0;
   };
 
   // One frame, in order.
@@ -111,6 +134,7 @@ class camera_controller final : public strategy {
   void on_status(int from, const protocol::status& s, controller_output& out);
   void on_handover(const protocol::handover& h, controller_output& out);
   void on_demotion(const protocol::demotion& d, controller_output& out);
+  void on_csp_conflict(const protocol::csp_conflict& c, controller_output& out);
   void on_csp_query(int from, const protocol::csp_query& q, controller_output& out);
   void on_csp_data(const protocol::csp_data& d, controller_output& out);
   void on_csp_result(const protocol::csp_result& r, controller_output& out);
@@ -156,12 +180,26 @@ class camera_controller final : public strategy {
   void open_auction(controller_output& out);
   void close_auction(controller_output& out);
   void invite(int camera, bool reassign, controller_output& out);
-  void start_csp(std::vector<protocol::relevance_bid> contended, controller_output& out);
+  // Conflicts (Section IV-B, docs/protocol.md "Conflicts"). A node claimed by two groups tells
+  // the leader of the lower task, which centralises the CSP: it asks the other leaders for
+  // their part, each leader (itself too) first auctions its task once more so that every
+  // camera of the groups can say its relevance to every task, then it solves and sends the
+  // whole result to every camera concerned, which takes its own place in it.
+  void report_conflict(std::vector<protocol::conflict_claim> claims, controller_output& out);
+  void start_csp(const std::map<int, protocol::task_id>& leaders,
+                 const std::map<task_id, std::vector<protocol::camera_relevance>>& claims,
+                 controller_output& out);
+  void open_gathering(controller_output& out);
   void solve_csp(controller_output& out);
-  void apply_assignment(const std::vector<int>& cameras, controller_output& out);
+  // This node's place in a conflict's result.
+  void take_place(const protocol::csp_result& r, controller_output& out);
+  // A node the last result placed, heard out of its place as the result left it: it missed the
+  // result, which it is sent again.
+  void retell_place(const protocol::status& s, controller_output& out);
   void apply_demotions(const demotion_negotiator::actions& a, controller_output& out,
                        std::optional<protocol::term_epoch> peer_term = std::nullopt);
-  protocol::csp_data own_csp_data(std::uint32_t round) const;
+  // Its part of a conflict among `tasks`.
+  protocol::csp_data own_csp_data(std::uint32_t round, const std::set<task_id>& tasks) const;
   protocol::status own_status() const;
 
   void send(int to, protocol::group_message m, controller_output& out) const;
@@ -225,6 +263,17 @@ class camera_controller final : public strategy {
   // The bids of the last closed auction (candidates for conflict resolution).
   std::vector<protocol::relevance_bid> last_bids_;
   std::optional<csp_round> csp_;
+  std::optional<csp_reply> csp_reply_;
+  std::optional<settled_conflict> settled_;
+  // The results taken (solver, round): a copy that arrives twice is taken once.
+  std::set<std::pair<int, std::uint32_t>> results_taken_;
+  // The last result taken, until the minimum task duration has passed, and how often it was
+  // sent again to each node heard out of its place.
+  std::optional<protocol::csp_result> last_result_;
+  std::int64_t last_result_until_ = 0;
+  std::map<int, int> results_retold_;
+  // Placed in its group by a conflict's result: not given up to another before then.
+  std::int64_t pinned_until_ = 0;
   // Tasks the operator ended: nothing about them is taken up again.
   std::set<task_id> cancelled_;
   std::uint32_t next_csp_round_ = 1;

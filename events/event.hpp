@@ -21,7 +21,8 @@ using event = std::variant<
     // strategies
     node_state, tracking, signature_shared, task_created, queried, bid, query_dropped, join_refused,
     joined, left_task, group_vanished, member_change, cancel_heard, auction_started, auction_closed,
-    invited, handoff, leader_changed, demotion_sent, conflict, csp_yielded, csp_solved, csp_applied,
+    invited, handoff, leader_changed, demotion_sent, conflict, conflict_reported, csp_yielded,
+    csp_abandoned, csp_solved, csp_applied,
     // the node, the network
     node_up, render_failed, strategy_failed, task_target, task_refused, neighbour_change,
     bad_message, net_received, net_sent, peer_failed,

@@ -267,6 +267,18 @@ struct conflict {
   }
 };
 
+struct conflict_reported {
+  static constexpr std::string_view name = "conflict_reported";
+  int camera = 0;
+  task_id task = 0;
+  std::vector<task_id> tasks;
+  int to = 0;
+  template <class F>
+  void members(F&& f) {
+    f("camera", camera), f("task", task), f("tasks", tasks), f("to", to);
+  }
+};
+
 struct csp_yielded {
   static constexpr std::string_view name = "csp_yielded";
   int camera = 0;
@@ -274,6 +286,17 @@ struct csp_yielded {
   template <class F>
   void members(F&& f) {
     f("camera", camera), f("task", task), f("to_task", to_task);
+  }
+};
+
+struct csp_abandoned {
+  static constexpr std::string_view name = "csp_abandoned";
+  int camera = 0;
+  task_id task = 0;
+  std::vector<task_id> missing;
+  template <class F>
+  void members(F&& f) {
+    f("camera", camera), f("task", task), f("missing", missing);
   }
 };
 
@@ -288,12 +311,22 @@ struct csp_solved {
   bool relaxed = false;
   task_counts minima;
   bool optimal = false;
+  // The problem solved and its answer, so that a reader can check it.
+  std::vector<task_id> tasks;
+  std::vector<int> camera_ids;
+  std::vector<unsigned> min_cameras, max_cameras;
+  std::vector<std::vector<fixed<6>>> relevance;
+  std::vector<std::vector<int>> staying;
+  std::vector<int> leaders;
+  std::vector<std::vector<int>> assigned;
   template <class F>
   void members(F&& f) {
     f("camera", camera), f("task", task), f("solver", solver), f("groups", groups),
         f("cameras", cameras), f("weight", weight), f("nodes_explored", nodes_explored),
         f("backtracks", backtracks), f("relaxed", relaxed), f("minima", minima),
-        f("optimal", optimal);
+        f("optimal", optimal), f("tasks", tasks), f("camera_ids", camera_ids),
+        f("min_cameras", min_cameras), f("max_cameras", max_cameras), f("relevance", relevance),
+        f("fixed", staying), f("leaders", leaders), f("assigned", assigned);
   }
 };
 

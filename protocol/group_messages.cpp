@@ -65,6 +65,21 @@ class writer {
     put(c.camera);
     put(c.relevance);
   }
+  void put(const conflict_claim& c) {
+    put(c.task);
+    put(c.leader);
+    put(c.term);
+    put(c.relevance);
+  }
+  void put(const csp_assignment& a) {
+    put(a.task);
+    put(a.leader);
+    put(a.term);
+    put(a.previous);
+    put(a.relevance);
+    put_vector(a.members);
+    put(a.minimum);
+  }
   // Longer strings are refused by encode: a note is never cut short.
   void put(const std::string& bytes) {
     put(static_cast<std::uint16_t>(bytes.size()));
@@ -150,6 +165,13 @@ class reader {
            t.min_cameras <= t.max_cameras;
   }
   bool get(camera_relevance& c) { return get(c.camera) && get(c.relevance); }
+  bool get(conflict_claim& c) {
+    return get(c.task) && get(c.leader) && get(c.term) && get(c.relevance);
+  }
+  bool get(csp_assignment& a) {
+    return get(a.task) && get(a.leader) && get(a.term) && get(a.previous) && get(a.relevance) &&
+           get_vector(a.members) && get(a.minimum);
+  }
   bool get(std::string& bytes) {
     std::uint16_t n = 0;
     if (!get(n) || in_.size() - at_ < n) return false;
@@ -201,15 +223,17 @@ auto fields(handover& m) {
 auto fields(demotion& m) {
   return std::tie(m.task, m.sender, m.term, m.members);
 }
+auto fields(csp_conflict& m) {
+  return std::tie(m.camera, m.claims);
+}
 auto fields(csp_query& m) {
   return std::tie(m.solver_task, m.solver, m.term, m.round);
 }
 auto fields(csp_data& m) {
-  return std::tie(m.task, m.leader, m.term, m.round, m.min_cameras, m.max_cameras, m.candidates,
-                  m.pinned);
+  return std::tie(m.task, m.leader, m.term, m.round, m.candidates, m.members, m.pinned);
 }
 auto fields(csp_result& m) {
-  return std::tie(m.task, m.solver, m.term, m.cameras, m.minimum);
+  return std::tie(m.solver_task, m.solver, m.term, m.round, m.groups);
 }
 auto fields(task_cancel& m) {
   return std::tie(m.task, m.sender);
@@ -234,9 +258,20 @@ bool valid(const status& m) {
   return is_relevance(m.relevance);
 }
 bool valid(const csp_data& m) {
-  return m.min_cameras <= m.max_cameras &&
-         std::all_of(m.candidates.begin(), m.candidates.end(),
+  return std::all_of(m.candidates.begin(), m.candidates.end(),
                      [](const camera_relevance& c) { return is_relevance(c.relevance); });
+}
+bool valid(const csp_result& m) {
+  return std::all_of(m.groups.begin(), m.groups.end(), [](const csp_assignment& a) {
+    return is_relevance(a.relevance) &&
+           std::all_of(a.members.begin(), a.members.end(),
+                       [](const camera_relevance& c) { return is_relevance(c.relevance); });
+  });
+}
+bool valid(const csp_conflict& m) {
+  return m.claims.size() >= 2 &&
+         std::all_of(m.claims.begin(), m.claims.end(),
+                     [](const conflict_claim& c) { return is_relevance(c.relevance); });
 }
 
 template <class T>
@@ -282,6 +317,7 @@ std::string_view kind_of(const group_message& m) {
     std::string_view operator()(const status&) const { return "status"; }
     std::string_view operator()(const handover&) const { return "handover"; }
     std::string_view operator()(const demotion& d) const { return demotion_kind(d.step); }
+    std::string_view operator()(const csp_conflict&) const { return "cspconflict"; }
     std::string_view operator()(const csp_query&) const { return "cspquery"; }
     std::string_view operator()(const csp_data&) const { return "cspdata"; }
     std::string_view operator()(const csp_result&) const { return "cspresult"; }
@@ -300,8 +336,13 @@ task_id task_of(const group_message& m) {
     task_id operator()(const handover& x) const { return x.task.task; }
     task_id operator()(const demotion& x) const { return x.task; }
     task_id operator()(const csp_query& x) const { return x.solver_task; }
-    task_id operator()(const csp_data& x) const { return x.task; }
-    task_id operator()(const csp_result& x) const { return x.task; }
+    task_id operator()(const csp_conflict& x) const {
+      task_id lowest = x.claims.empty() ? 0 : x.claims.front().task;
+      for (const auto& c : x.claims) lowest = std::min(lowest, c.task);
+      return lowest;
+    }
+    task_id operator()(const csp_data& x) const { return x.task.task; }
+    task_id operator()(const csp_result& x) const { return x.solver_task; }
     task_id operator()(const task_cancel& x) const { return x.task; }
     task_id operator()(const note& x) const { return x.task; }
   };
@@ -309,9 +350,9 @@ task_id task_of(const group_message& m) {
 }
 
 bool is_group_kind(std::string_view kind) {
-  for (std::string_view k :
-       {"queryrelevance", "relevance", "join", "status", "handover", "demote", "demoteack",
-        "demotenack", "demoteretry", "cspquery", "cspdata", "cspresult", "cancel", "note"})
+  for (std::string_view k : {"queryrelevance", "relevance", "join", "status", "handover", "demote",
+                             "demoteack", "demotenack", "demoteretry", "cspconflict", "cspquery",
+                             "cspdata", "cspresult", "cancel", "note"})
     if (kind == k) return true;
   return false;
 }
@@ -331,6 +372,7 @@ std::optional<group_message> decode(std::string_view kind, std::string_view body
   if (kind == "join") return read_whole<join>(body);
   if (kind == "status") return read_whole<status>(body);
   if (kind == "handover") return read_whole<handover>(body);
+  if (kind == "cspconflict") return read_whole<csp_conflict>(body);
   if (kind == "cspquery") return read_whole<csp_query>(body);
   if (kind == "cspdata") return read_whole<csp_data>(body);
   if (kind == "cspresult") return read_whole<csp_result>(body);

@@ -150,29 +150,63 @@ struct camera_relevance {
   friend bool operator==(const camera_relevance&, const camera_relevance&) = default;
 };
 
-/// A leader's answer to csp_query: its task's requirements and the cameras it could use
-/// (members and bidders with their relevance); `pinned` are members it will not give up.
+/// A leader's answer to csp_query, sent when the auction it opened on the query closes: its
+/// task, and the cameras it could use with their relevance to it (itself, its members and
+/// that auction's bidders). `members` are those in its group now (its leader first); `pinned`
+/// those it will not give up: cameras that a conflict's result placed in the group less than
+/// the minimum task duration ago.
 struct csp_data {
-  task_id task = 0;
+  task_description task;
   int leader = 0;
   term_epoch term = 0;  // the leader's
   std::uint32_t round = 0;
-  std::uint16_t min_cameras = 1;
-  std::uint16_t max_cameras = 1;
   std::vector<camera_relevance> candidates;
+  std::vector<int> members;
   std::vector<int> pinned;
   friend bool operator==(const csp_data&, const csp_data&) = default;
 };
 
-/// The solver's decision for the receiver's group: the cameras (besides its leader) it keeps
-/// or recruits, and the minimum it was relaxed to.
+/// One group of a conflict's result: its task, its leader from now on (a new epoch when the
+/// leader changes) and the leader it had, and its other cameras, each with its relevance to the
+/// task as the solver knew it.
+struct csp_assignment {
+  task_description task;
+  int leader = 0;
+  term_epoch term = 0;
+  int previous = 0;
+  double relevance = 0.0;  // the leader's
+  std::vector<camera_relevance> members;
+  std::uint16_t minimum = 0;  // the minimum it was relaxed to
+  friend bool operator==(const csp_assignment&, const csp_assignment&) = default;
+};
+
+/// The solver's decision, the whole of it, sent to every camera it names or takes from a
+/// group: each applies its own part (docs/protocol.md, "Conflicts").
 struct csp_result {
-  task_id task = 0;
+  task_id solver_task = 0;
   int solver = 0;
   term_epoch term = 0;  // the solver's
-  std::vector<int> cameras;
-  std::uint16_t minimum = 0;
+  std::uint32_t round = 0;
+  std::vector<csp_assignment> groups;
   friend bool operator==(const csp_result&, const csp_result&) = default;
+};
+
+/// A group of `task` that claims a camera, as the camera knows it.
+struct conflict_claim {
+  task_id task = 0;
+  int leader = 0;
+  term_epoch term = 0;
+  double relevance = 0.0;  // the camera's to that task
+  friend bool operator==(const conflict_claim&, const conflict_claim&) = default;
+};
+
+/// Section IV-B: a node that intercepts queries of two groups for itself, or of another group
+/// while it belongs to one, initiates conflict resolution: it tells the leader of the lowest
+/// task among the claims, which centralises the CSP.
+struct csp_conflict {
+  int camera = 0;
+  std::vector<conflict_claim> claims;
+  friend bool operator==(const csp_conflict&, const csp_conflict&) = default;
 };
 
 /// The operator ended task `task` (not in the paper, which never ends a task): every node that
@@ -195,12 +229,13 @@ struct note {
 };
 
 /// Any message of the protocol.
-using group_message = std::variant<query_relevance, relevance_bid, join, status, handover, demotion,
-                                   csp_query, csp_data, csp_result, task_cancel, note>;
+using group_message =
+    std::variant<query_relevance, relevance_bid, join, status, handover, demotion, csp_conflict,
+                 csp_query, csp_data, csp_result, task_cancel, note>;
 
 /// The kind a message travels as: the paper's names ("queryrelevance", "relevance", "join",
 /// "status", "demote", "demoteack", "demotenack", "demoteretry"), and ours for what it leaves
-/// unnamed ("handover", "cspquery", "cspdata", "cspresult", "cancel", "note").
+/// unnamed ("handover", "cspconflict", "cspquery", "cspdata", "cspresult", "cancel", "note").
 std::string_view kind_of(const group_message& m);
 
 /// The task a message is about (a conflict query: the solver's task).

@@ -19,6 +19,7 @@
 #include "eval/mot_export.hpp"
 #include "nlohmann/json.hpp"
 #include "surveillance_runs.hpp"
+#include "tests/support/csp_log_check.hpp"
 
 namespace argus::actors {
 namespace {
@@ -230,28 +231,55 @@ TEST(surveillance, the_operator_clicks_on_a_pedestrian_or_on_nobody) {
 }
 
 // Fig. 19: camera 2 takes the first pedestrian to enter its view and camera 1 joins it; a
-// second task arrives through camera 1, which leaves the first group to lead it and serves it.
-// (Whether the first group then bids for camera 1 and the conflict goes to the CSP depends on
-// who sees whom: bench/RESULTS.md counts it over seeds.)
-TEST(surveillance, a_second_task_takes_a_camera_from_the_first_group) {
+// second task arrives through camera 1, which leaves the first group to lead it and, claimed by
+// two groups, initiates conflict resolution. Camera 2 (the lower task's leader) centralises the
+// CSP, both cameras weighed for both tasks, and each camera takes its place in the optimum.
+// Seed 2: the first group still has both cameras when the second task comes (in seed 1 camera
+// 2 has already lost her and handed the group to camera 1, which the operator then takes).
+TEST(surveillance, fig_19_two_tasks_are_settled_by_the_csp) {
   auto s =
       config::load_scenario(std::filesystem::path(ARGUS_SOURCE_DIR) / "scenarios/two_tasks.yaml");
   s.sensing.mode = config::sensing_mode::emulated;
+  s.run.seed = 2;
   s.run.threads = 2;
   s.run.output_dir = (std::filesystem::temp_directory_path() / "argus_surveil_fig19").string();
   const auto o = run_scenario(s, false);
   ASSERT_EQ(o.evaluation.tasks.size(), 2u);
-  bool joined_first = false, left_for_second = false, leads_second = false;
+  bool joined_first = false, left_for_second = false, leads_second = false, reported = false;
+  std::optional<nlohmann::json> solved;
+  std::map<int, int> applied;  // camera -> its task in the first result it took
   for (const auto& e : events_of(o)) {
-    if (e.value("camera", 0) != 1) continue;
-    if (e["kind"] == "joined" && e["task"] == 0) joined_first = true;
-    if (e["kind"] == "left_task" && e["task"] == 0 && e["reason"] == "operator")
+    const int camera = e.value("camera", 0);
+    if (camera == 1 && e["kind"] == "joined" && e["task"] == 0) joined_first = true;
+    if (camera == 1 && e["kind"] == "left_task" && e["task"] == 0 && e["reason"] == "operator")
       left_for_second = joined_first;
-    if (e["kind"] == "task_created" && e["task"] == 1) leads_second = left_for_second;
+    if (camera == 1 && e["kind"] == "task_created" && e["task"] == 1)
+      leads_second = left_for_second;
+    if (camera == 1 && e["kind"] == "conflict_reported" && leads_second) {
+      reported = true;
+      EXPECT_EQ(e["tasks"], nlohmann::json::array({0, 1}));
+      EXPECT_EQ(e["to"], 2);
+    }
+    if (e["kind"] == "csp_solved" && !solved) {
+      EXPECT_EQ(camera, 2);
+      solved = e;
+    }
+    if (e["kind"] == "csp_applied" && solved && applied.count(camera) == 0)
+      applied[camera] = e["task"].get<int>();
   }
-  EXPECT_TRUE(joined_first);
-  EXPECT_TRUE(left_for_second);
   EXPECT_TRUE(leads_second);
+  EXPECT_TRUE(reported);
+  ASSERT_TRUE(solved.has_value());
+  // Both cameras were weighed for both tasks' groups, and the answer is the optimum.
+  EXPECT_EQ((*solved)["camera_ids"], nlohmann::json::array({1, 2}));
+  EXPECT_EQ((*solved)["tasks"], nlohmann::json::array({0, 1}));
+  argus::testing::expect_optimal(*solved, s.controller.membership_relevance_threshold);
+  // Each camera took the place the answer gave it.
+  const auto leaders = (*solved)["leaders"].get<std::vector<int>>();
+  ASSERT_EQ(leaders.size(), 2u);
+  EXPECT_EQ(applied[leaders[0]], 0);
+  EXPECT_EQ(applied[leaders[1]], 1);
+  EXPECT_GT(o.evaluation.tasks[0].coverage, 0.0);
   EXPECT_GT(o.evaluation.tasks[1].coverage, 0.0);
 }
 

@@ -157,6 +157,7 @@ void chaos(config::merge_rule rule, std::int64_t bound) {
     EXPECT_LE(r.longest_two_leaders_after_faults, bound) << "seed " << seed;
     EXPECT_EQ(r.epochs_gone_back, 0u) << "seed " << seed;
     EXPECT_EQ(r.members_ahead, 0u) << "seed " << seed;
+    if (r.longest_leaderless_after_faults > 45 || r.longest_orphan_after_faults > 45) std::cout << "DBG seed " << seed << " " << r.longest_leaderless_after_faults << " " << r.longest_orphan_after_faults << "\n";
     worst_leaderless = std::max(worst_leaderless, r.longest_leaderless_after_faults);
     worst_orphan = std::max(worst_orphan, r.longest_orphan_after_faults);
     solved += r.csp_solved;

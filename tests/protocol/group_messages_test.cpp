@@ -40,9 +40,10 @@ std::vector<group_message> one_of_each() {
           demotion{demotion_step::ack, 3, 1, 17, {4, 5}},
           demotion{demotion_step::nack, 3, 1, 18, {}},
           demotion{demotion_step::retry, 3, 1, 19, {}},
+          csp_conflict{9, {{3, 1, 24, 0.5}, {4, 2, 25, 0.75}}},
           csp_query{3, 1, 20, 2},
-          csp_data{3, 1, 21, 2, 1, 2, {{4, 0.5}, {5, 0.25}}, {4}},
-          csp_result{3, 1, 22, {4, 5}, 1},
+          csp_data{a_task(), 1, 21, 2, {{4, 0.5}, {5, 0.25}}, {1, 4}, {4}},
+          csp_result{3, 1, 22, 7, {{a_task(), 4, 26, 1, 0.5, {{5, 0.25}, {6, 0.125}}, 1}}},
           task_cancel{3, 1},
           query_relevance{a_task_with_halves(), 1, 23, 4, false},
           note{3, 1, "hello", std::string("\0\x01bytes", 7)}};
@@ -78,6 +79,8 @@ TEST(group_messages, the_paper_names_the_kinds) {
   EXPECT_EQ(kind_of(all[6]), "demoteack");
   EXPECT_EQ(kind_of(all[7]), "demotenack");
   EXPECT_EQ(kind_of(all[8]), "demoteretry");
+  EXPECT_EQ(kind_of(all[9]), "cspconflict");
+  EXPECT_EQ(task_of(all[9]), 3u);  // the lowest task claimed: its leader centralises
 }
 
 TEST(group_messages, truncated_or_padded_bytes_are_refused) {
@@ -103,6 +106,11 @@ TEST(group_messages, out_of_range_values_are_refused) {
   q.task.min_cameras = 4;  // more than the maximum
   EXPECT_FALSE(decode("queryrelevance", encode(q)));
   EXPECT_FALSE(decode("nosuchkind", encode(bid)));
+  // A conflict is two claims or more, each with a relevance.
+  EXPECT_FALSE(decode("cspconflict", encode(csp_conflict{9, {{3, 1, 1, 0.5}}})));
+  EXPECT_FALSE(decode("cspconflict", encode(csp_conflict{9, {{3, 1, 1, 0.5}, {4, 2, 1, 2.0}}})));
+  EXPECT_FALSE(decode("cspresult",
+                      encode(csp_result{3, 1, 1, 1, {{a_task(), 4, 2, 1, 0.5, {{5, -0.5}}, 1}}})));
 }
 
 }  // namespace
