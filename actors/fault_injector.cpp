@@ -158,6 +158,12 @@ void perform(injector* self, tick_context& ctx, const planned& p) {
       cmd.until_tick = ctx.tick() + config::to_ticks(f.length, st.scenario.run.tick);
       tell_links(self, f.camera, cmd);
       break;
+    case config::fault_kind::delay_spike:
+      cmd.op = link_op::delay_spike;
+      cmd.until_tick = ctx.tick() + config::to_ticks(f.length, st.scenario.run.tick);
+      cmd.extra_ticks = config::to_ticks(f.delay, st.scenario.run.tick);
+      tell_links(self, f.camera, cmd);
+      break;
     case config::fault_kind::recover:
       break;  // above
   }

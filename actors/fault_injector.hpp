@@ -39,6 +39,7 @@ participant_info fault_injector_participant(const config::scenario& scenario, bo
 ///   actor, joins it to the clock and attaches it to its links (`node_recovered`);
 /// - `link_cut` / `link_heal`: cuts or heals the link between `camera` and `peer`;
 /// - `loss_burst`: sets every link of `camera` to `loss_probability` for `length`;
+/// - `delay_spike`: every message sent on a link of `camera` for `length` takes `delay` longer;
 /// - `recover`: the second half of a crash_and_recover on its own (`node_recovered`).
 /// Every action is logged as a `fault` event. Commands to links are requests, sent in the
 /// order they were made once the turn's crashed cameras have ended, and the injector's

@@ -54,6 +54,13 @@ struct loss_burst {
   double loss = 0.0;
 };
 
+// Messages sent in [from, until) take `extra` ticks longer.
+struct delay_spike {
+  std::int64_t from = 0;
+  std::int64_t until = 0;
+  std::int64_t extra = 0;
+};
+
 // One direction of the link: messages sent by end `from` to the other end. Each has its own
 // random stream and counters, so the two ends' mail can be read in either order (they flush
 // in the same phase, and which reaches the link first is up to the threads) with the same
@@ -84,6 +91,7 @@ struct link_state {
   std::vector<kind_counts> kinds;
   // Loss bursts by start tick; a message sent at s takes the last one started by s.
   std::vector<loss_burst> bursts;
+  std::vector<delay_spike> spikes;
   std::int64_t lookahead = 1;
   // Sent while the receiving end was down, by sending end.
   std::array<std::vector<waiting>, 2> for_down_end;
@@ -94,6 +102,14 @@ struct link_state {
     for (auto it = bursts.rbegin(); it != bursts.rend(); ++it)
       if (it->from <= sent_tick) return sent_tick < it->until ? it->loss : normal;
     return normal;
+  }
+
+  // The delay added to a message sent at `sent_tick` (the longest spike it falls in).
+  std::int64_t extra_delay_at(std::int64_t sent_tick) const {
+    std::int64_t extra = 0;
+    for (const auto& s : spikes)
+      if (s.from <= sent_tick && sent_tick < s.until) extra = std::max(extra, s.extra);
+    return extra;
   }
 
   // Index of `kind` in `kinds`, added on first use.
@@ -202,7 +218,7 @@ verdict judge(link_state& st, std::size_t from, std::int64_t sent_tick, std::uin
     return v;
   }
   v.lost = false;
-  v.due = sent_tick + fate.delay_ticks;
+  v.due = sent_tick + fate.delay_ticks + st.extra_delay_at(sent_tick);
   if (!st.reorder) v.due = std::max(v.due, dir.last_due);
   dir.last_due = v.due;
   if (fate.duplicated) {
@@ -311,6 +327,9 @@ void apply(link_actor* self, const mail_stamp& stamp, const link_command& cmd) {
     case link_op::loss_burst:
       st.bursts.push_back(loss_burst{tick, cmd.until_tick, cmd.loss_probability});
       break;
+    case link_op::delay_spike:
+      st.spikes.push_back(delay_spike{tick, cmd.until_tick, cmd.extra_ticks});
+      break;
   }
 }
 
@@ -322,6 +341,7 @@ void forget_bursts(link_state& st, std::int64_t tick) {
                                  [&](const loss_burst& b) { return b.from > horizon; });
   if (superseded != st.bursts.begin()) --superseded;  // the last one started by then stays
   st.bursts.erase(st.bursts.begin(), superseded);
+  std::erase_if(st.spikes, [&](const delay_spike& s) { return s.until <= horizon; });
 }
 
 caf::behavior link(link_actor* self, participant_info info,

@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <spawn.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -53,11 +54,13 @@ pid_t start_process(const std::string& program, const std::vector<std::string>& 
 
 std::optional<ended_process> wait_for_any_child() {
   int status = 0;
-  const pid_t pid = waitpid(-1, &status, 0);
+  rusage usage{};
+  const pid_t pid = wait4(-1, &status, 0, &usage);
   if (pid <= 0) return std::nullopt;
-  if (WIFEXITED(status)) return ended_process{pid, WEXITSTATUS(status)};
-  if (WIFSIGNALED(status)) return ended_process{pid, 128 + WTERMSIG(status)};
-  return ended_process{pid, 255};
+  const long rss = usage.ru_maxrss;  // KiB on Linux
+  if (WIFEXITED(status)) return ended_process{pid, WEXITSTATUS(status), rss};
+  if (WIFSIGNALED(status)) return ended_process{pid, 128 + WTERMSIG(status), rss};
+  return ended_process{pid, 255, rss};
 }
 
 std::string this_executable() {

@@ -21,6 +21,8 @@ pid_t start_process(const std::string& program, const std::vector<std::string>& 
 struct ended_process {
   pid_t pid = 0;
   int exit_status = 0;
+  /// Its peak resident memory (the kernel's maximum resident set size), in KiB.
+  long max_rss_kib = 0;
 };
 
 /// Waits for any child to end; nothing when a signal interrupted the wait or no child is left.

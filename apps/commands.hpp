@@ -36,6 +36,10 @@ void add_report_command(CLI::App& app, int& result);
 /// exit code.
 void add_sweep_command(CLI::App& app, int& result);
 
+/// Adds `argus chaos` (runs under random faults, each checked for safety and liveness) to
+/// `app`; sets `result` to its exit code.
+void add_chaos_command(CLI::App& app, int& result);
+
 /// Adds `argus generate station` (a large station's scenario and layout) to `app`; sets
 /// `result` to its exit code.
 void add_generate_command(CLI::App& app, int& result);

@@ -54,12 +54,13 @@ struct enum_names<conflict_solver> {
 /// Names for the `kind` of a fault.
 template <>
 struct enum_names<fault_kind> {
-  static constexpr std::array<enum_entry<fault_kind>, 6> entries{{
+  static constexpr std::array<enum_entry<fault_kind>, 7> entries{{
       {fault_kind::crash, "crash"},
       {fault_kind::crash_and_recover, "crash_and_recover"},
       {fault_kind::link_cut, "link_cut"},
       {fault_kind::link_heal, "link_heal"},
       {fault_kind::loss_burst, "loss_burst"},
+      {fault_kind::delay_spike, "delay_spike"},
       {fault_kind::recover, "recover"},
   }};
 };

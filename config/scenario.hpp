@@ -409,10 +409,19 @@ struct operator_task {
 /// What a scheduled fault does.
 /// `recover` brings a crashed camera back (a fresh actor), as a crash_and_recover's second half
 /// does; the operator console's `recover` command is replayed as one.
-enum class fault_kind { crash, crash_and_recover, link_cut, link_heal, loss_burst, recover };
+/// `delay_spike` adds `delay` to every message `camera`'s links carry, both ways, for `length`.
+enum class fault_kind {
+  crash,
+  crash_and_recover,
+  link_cut,
+  link_heal,
+  loss_burst,
+  recover,
+  delay_spike
+};
 
 /// One scheduled fault. `peer` is the other end of a link fault; `length` is the recovery
-/// delay (crash_and_recover) or the burst length (loss_burst).
+/// delay (crash_and_recover) or the burst or spike length (loss_burst, delay_spike).
 struct fault {
   seconds at{0.0};
   fault_kind kind = fault_kind::crash;
@@ -420,6 +429,8 @@ struct fault {
   std::optional<int> peer;
   seconds length{0.0};
   double loss_probability = 1.0;
+  /// The added delay of a delay_spike.
+  seconds delay{0.0};
   friend bool operator==(const fault&, const fault&) = default;
 };
 

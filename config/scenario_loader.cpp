@@ -119,8 +119,8 @@ constexpr std::array<std::string_view, 30> controller_keys{"wait_timeout",
 constexpr std::array<std::string_view, 8> task_keys{
     "at",     "pedestrian",     "pixel",       "first_to_enter",
     "camera", "cameras_wanted", "max_cameras", "cancel_at"};
-constexpr std::array<std::string_view, 6> fault_keys{"at",   "kind",   "camera",
-                                                     "peer", "length", "loss_probability"};
+constexpr std::array<std::string_view, 7> fault_keys{
+    "at", "kind", "camera", "peer", "length", "loss_probability", "delay"};
 
 const auto probability = value_bounds::closed(0.0, 1.0);
 const auto non_negative = value_bounds::at_least(0.0);
@@ -626,8 +626,9 @@ class scenario_parser {
           read_camera_reference(*entry.find("camera"), entry.field("camera"), read.camera);
       const auto kind_name = std::string{yaml_name(read.kind)};
       const bool is_link = read.kind == fault_kind::link_cut || read.kind == fault_kind::link_heal;
-      const bool has_length =
-          read.kind == fault_kind::crash_and_recover || read.kind == fault_kind::loss_burst;
+      const bool has_length = read.kind == fault_kind::crash_and_recover ||
+                              read.kind == fault_kind::loss_burst ||
+                              read.kind == fault_kind::delay_spike;
       if (const auto peer = entry.find("peer")) {
         int id = 0;
         if (read_camera_reference(*peer, entry.field("peer"), id)) {
@@ -648,6 +649,12 @@ class scenario_parser {
         entry.read("length", read.length, non_negative);
       }
       entry.read("loss_probability", read.loss_probability, probability);
+      if (kind_valid && read.kind == fault_kind::delay_spike) {
+        if (entry.require("delay", "needed by delay_spike"))
+          entry.read("delay", read.delay, positive);
+      } else {
+        entry.read("delay", read.delay, non_negative);
+      }
       out.push_back(read);
     }
   }

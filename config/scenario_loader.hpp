@@ -57,6 +57,7 @@
 ///   - {at: 100 s, kind: link_cut, camera: 1, peer: 2}                  # peer required
 ///   - {at: 110 s, kind: link_heal, camera: 1, peer: 2}                 # peer required
 ///   - {at: 120 s, kind: loss_burst, camera: 4, length: 5 s, loss_probability: 0.8}
+///   - {at: 130 s, kind: delay_spike, camera: 4, length: 5 s, delay: 2 s}
 ///   - {at: 130 s, kind: recover, camera: 7}        # a crashed camera comes back
 /// ```
 ///

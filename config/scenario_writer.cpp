@@ -165,8 +165,11 @@ std::string fault_line(const fault& each) {
   auto text = fmt::format("- {{at: {}, kind: {}, camera: {}", duration(each.at),
                           yaml_name(each.kind), each.camera);
   if (each.peer) text += fmt::format(", peer: {}", *each.peer);
-  text += fmt::format(", length: {}, loss_probability: {}}}", duration(each.length),
+  text += fmt::format(", length: {}, loss_probability: {}", duration(each.length),
                       number(each.loss_probability));
+  if (each.kind == fault_kind::delay_spike)
+    text += fmt::format(", delay: {}", duration(each.delay));
+  text += "}";
   return text;
 }
 

@@ -537,6 +537,12 @@ void camera_controller::on_handover(const protocol::handover& h, controller_outp
 }
 
 void camera_controller::on_demotion(const protocol::demotion& d, controller_output& out) {
+  // A leader that missed the cancellation hears it again, and nothing else about the task.
+  if (cancelled_.count(d.task) != 0) {
+    if (d.step == protocol::demotion_step::demote)
+      send(d.sender, protocol::task_cancel{d.task, me_.id}, out);
+    return;
+  }
   heard_term(d.task, d.term);
   if (!task_ || role_ != group_role::leader || d.task != task_->task) {
     // No longer a leader of that task: the negotiation is over for this side.
@@ -569,6 +575,7 @@ void camera_controller::on_demotion(const protocol::demotion& d, controller_outp
     // a newer one.
     term_ = next_term(task_->task);
     heard_term(task_->task, term_);
+    emit_leader_changed(me_.id, me_.id, "merged", out);
     send(protocol::broadcast, own_status(), out);
   }
   apply_demotions(a, out, d.term);
@@ -642,7 +649,8 @@ void camera_controller::emit_leader_changed(int leader, int previous, std::strin
 
 void camera_controller::leave_task(std::string_view reason, controller_output& out) {
   if (!task_) return;
-  if (role_ == group_role::member) {
+  // Nothing more about a cancelled task: its leader hears the cancellation itself.
+  if (role_ == group_role::member && cancelled_.count(task_->task) == 0) {
     auto last = own_status();
     last.leaving = true;
     send(leader_, last, out);
@@ -724,6 +732,7 @@ void camera_controller::met_other_leader(int other, protocol::term_epoch term, i
     } else {
       term_ = next_term(task_->task);
       heard_term(task_->task, term_);
+      emit_leader_changed(me_.id, me_.id, "merged", out);
       send(protocol::broadcast, own_status(), out);
     }
     return;
@@ -1203,7 +1212,11 @@ void camera_controller::on_csp_result(const protocol::csp_result& r, controller_
 void camera_controller::take_place(const protocol::csp_result& r, controller_output& out) {
   results_taken_.insert({r.solver, r.round});
   last_result_ = r;
-  last_result_until_ = now_ + ticks(settings_.min_task_duration);
+  // Long enough for a node that missed it to be heard (a heartbeat, a status's delay), short
+  // enough that a node that has since crashed and come back, with nothing in memory, is not
+  // sent an old decision and its ended terms.
+  last_result_until_ =
+      now_ + ticks(settings_.member_failure_timeout) + ticks(settings_.leader_failure_timeout);
   results_retold_.clear();
   const protocol::csp_assignment* mine = nullptr;
   bool concerned = false;

@@ -267,7 +267,7 @@ class camera_controller final : public strategy {
   std::optional<settled_conflict> settled_;
   // The results taken (solver, round): a copy that arrives twice is taken once.
   std::set<std::pair<int, std::uint32_t>> results_taken_;
-  // The last result taken, until the minimum task duration has passed, and how often it was
+  // The last result taken, for a few seconds after (take_place says why), and how often it was
   // sent again to each node heard out of its place.
   std::optional<protocol::csp_result> last_result_;
   std::int64_t last_result_until_ = 0;

@@ -10,9 +10,20 @@ controller::controller_output frame_recording::step(const controller::controller
   if (truth_->log)
     if (const auto frame = truth_->now()) record(in, *frame);
   auto out = inner().step(in);
-  if (truth_->log)
-    for (const auto& m : out.messages)
-      truth_->log->add_sent(protocol::task_of(m.message), protocol::kind_of(m.message));
+  if (!truth_->log) return out;
+  // Against the cancellations heard in earlier frames: within a frame, what came in before the
+  // cancellation was answered before it too.
+  for (const auto& m : out.messages) {
+    const auto task = protocol::task_of(m.message);
+    const auto kind = protocol::kind_of(m.message);
+    truth_->log->add_sent(task, kind, in.tick);
+    if (cancelled_.count(task) != 0 && kind != "cancel")
+      truth_->log->add_sent_after_cancel(task, kind);
+  }
+  for (const auto& e : out.events)
+    if (e.kind == events::cancel_heard::name)
+      if (const auto parsed = events::parse(e.kind, e.fields_json))
+        if (const auto* c = std::get_if<events::cancel_heard>(&*parsed)) cancelled_.insert(c->task);
   return out;
 }
 

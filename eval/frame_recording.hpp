@@ -1,6 +1,7 @@
 #pragma once
 
 #include <memory>
+#include <set>
 
 #include "controller/strategy.hpp"
 #include "eval/camera_truth.hpp"
@@ -29,6 +30,8 @@ class frame_recording final : public controller::strategy_wrapper {
 
   std::shared_ptr<const camera_truth> truth_;
   std::shared_ptr<sighting_board> sightings_;
+  // Tasks whose cancellation this node has heard (its cancel_heard events).
+  std::set<std::uint32_t> cancelled_;
 };
 
 }  // namespace argus::eval

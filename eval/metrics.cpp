@@ -1,6 +1,7 @@
 #include "eval/metrics.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <stdexcept>
 
@@ -262,6 +263,20 @@ evaluation evaluate(const config::scenario& scenario, const world::station& stat
     event_figures(events, index, observed_ticks, m, start, end, tick_s);
     for (const auto& [key, count] : log.sent)
       if (key.first == origin.task) m.messages_by_kind[key.second] = count;
+    if (auto it = log.sent_by_tick.find(origin.task); it != log.sent_by_tick.end()) {
+      // Whole simulated seconds from the run's start: second k holds ticks [k/tick_s, ...).
+      std::map<std::int64_t, std::uint64_t> per_second;
+      for (const auto& [tick, count] : it->second)
+        per_second[static_cast<std::int64_t>(
+            std::floor(static_cast<double>(tick) * tick_s + 1e-9))] += count;
+      for (const auto& [second, count] : per_second)
+        m.peak_messages_per_s = std::max(m.peak_messages_per_s, count);
+    }
+    for (const auto& [key, count] : log.sent_after_cancel)
+      if (key.first == origin.task) {
+        m.messages_after_cancel += count;
+        m.messages_after_cancel_by_kind[key.second] = count;
+      }
     out.tasks.push_back(std::move(m));
   }
   return out;
@@ -309,6 +324,9 @@ nlohmann::json task_json(const task_metrics& m) {
       {"leader_changes", m.leader_changes},
       {"messages_by_kind", m.messages_by_kind},
       {"messages", messages},
+      {"peak_messages_per_s", m.peak_messages_per_s},
+      {"messages_after_cancel", m.messages_after_cancel},
+      {"messages_after_cancel_by_kind", m.messages_after_cancel_by_kind},
       {"csp_invocations", m.csp_invocations},
       {"failure_recoveries", recoveries}};
 }
@@ -339,12 +357,14 @@ nlohmann::json min_coverage(const std::vector<task_metrics>& tasks) {
 nlohmann::json metrics_json(const config::scenario& scenario, const evaluation& result,
                             double wall_seconds, double virtual_seconds) {
   nlohmann::json tasks = nlohmann::json::array();
-  std::uint64_t handoffs = 0, switches = 0, messages = 0;
+  std::uint64_t handoffs = 0, switches = 0, messages = 0, peak = 0, after_cancel = 0;
   for (const auto& m : result.tasks) {
     tasks.push_back(task_json(m));
     handoffs += m.observation_handoffs;
     switches += m.identity_switches;
     for (const auto& [kind, count] : m.messages_by_kind) messages += count;
+    peak = std::max(peak, m.peak_messages_per_s);
+    after_cancel += m.messages_after_cancel;
   }
   const auto& t = result.tasks;
   nlohmann::json summary = {
@@ -361,6 +381,8 @@ nlohmann::json metrics_json(const config::scenario& scenario, const evaluation& 
       {"handoffs", handoffs},
       {"identity_switches", switches},
       {"messages", messages},
+      {"peak_messages_per_task_s", peak},
+      {"messages_after_cancel", after_cancel},
       {"wall_seconds", wall_seconds},
       {"speed_ratio", wall_seconds > 0.0 ? nlohmann::json(virtual_seconds / wall_seconds)
                                          : nlohmann::json(nullptr)}};

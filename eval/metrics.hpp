@@ -88,6 +88,11 @@ struct task_metrics {
   std::vector<std::pair<double, int>> group_size_series;  // (t, size) at each change
   int leader_changes = 0;
   std::map<std::string, std::uint64_t> messages_by_kind;
+  /// The most messages its nodes originated for it in one whole simulated second.
+  std::uint64_t peak_messages_per_s = 0;
+  /// Messages originated for it by nodes that had heard its cancellation (none expected).
+  std::uint64_t messages_after_cancel = 0;
+  std::map<std::string, std::uint64_t> messages_after_cancel_by_kind;
   int csp_invocations = 0;
   std::vector<recovery> failure_recoveries;
 };

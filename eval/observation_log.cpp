@@ -53,9 +53,15 @@ void observation_log::add_samples(std::vector<target_sample> samples) {
   data_.samples.insert(data_.samples.end(), samples.begin(), samples.end());
 }
 
-void observation_log::add_sent(std::uint32_t task, std::string_view kind) {
+void observation_log::add_sent(std::uint32_t task, std::string_view kind, std::int64_t tick) {
   std::lock_guard<std::mutex> guard(mutex_);
   ++data_.sent[{task, std::string(kind)}];
+  ++data_.sent_by_tick[task][tick];
+}
+
+void observation_log::add_sent_after_cancel(std::uint32_t task, std::string_view kind) {
+  std::lock_guard<std::mutex> guard(mutex_);
+  ++data_.sent_after_cancel[{task, std::string(kind)}];
 }
 
 observation_log::contents observation_log::take() {

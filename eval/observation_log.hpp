@@ -41,7 +41,11 @@ class observation_log {
   void add_samples(std::vector<target_sample> samples);
   /// The cameras that recorded a frame in `tick` (once that tick's camera phase is over).
   std::set<int> cameras_alive(std::int64_t tick) const;
-  void add_sent(std::uint32_t task, std::string_view kind);
+  /// A message a node originated at `tick` for `task`.
+  void add_sent(std::uint32_t task, std::string_view kind, std::int64_t tick);
+  /// A message a node originated for `task` after it had heard the task's cancellation
+  /// (anything but the `cancel` it spreads): the protocol must send none.
+  void add_sent_after_cancel(std::uint32_t task, std::string_view kind);
 
   /// Everything recorded, once the run is over.
   struct contents {
@@ -50,6 +54,8 @@ class observation_log {
     std::map<std::uint32_t, std::int64_t> cancels;
     std::vector<target_sample> samples;
     std::map<std::pair<std::uint32_t, std::string>, std::uint64_t> sent;
+    std::map<std::uint32_t, std::map<std::int64_t, std::uint64_t>> sent_by_tick;  // task, tick
+    std::map<std::pair<std::uint32_t, std::string>, std::uint64_t> sent_after_cancel;
   };
   contents take();
 

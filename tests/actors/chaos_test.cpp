@@ -1,6 +1,6 @@
-// Chaos on real threads: random node crashes, a crash-and-recover, a link cut and heal and a
-// loss burst. The clock must never stall, every message must be accounted for, and the event
-// log must not depend on the thread count.
+// Chaos on real threads: random node crashes, a crash-and-recover, a link cut and heal, a loss
+// burst and a delay spike. The clock must never stall, every message must be accounted for, and the
+// event log must not depend on the thread count.
 
 #include <gtest/gtest.h>
 
@@ -50,7 +50,13 @@ config::scenario chaos(const std::filesystem::path& out, unsigned threads) {
   burst.camera = 7;
   burst.length = config::seconds{5.0};
   burst.loss_probability = 0.9;
-  s.faults = {recover, cut, heal, burst};
+  config::fault spike;
+  spike.at = config::seconds{30.0};
+  spike.kind = config::fault_kind::delay_spike;
+  spike.camera = 5;
+  spike.length = config::seconds{10.0};
+  spike.delay = config::seconds{2.0};
+  s.faults = {recover, cut, heal, burst, spike};
   return s;
 }
 

@@ -178,7 +178,7 @@ TEST(scenario_loader, reads_every_field_of_a_full_scenario) {
   EXPECT_EQ(loaded.tasks[0].camera, 2);
   EXPECT_EQ(loaded.tasks[0].cameras_wanted, 2u);
 
-  ASSERT_EQ(loaded.faults.size(), 5u);
+  ASSERT_EQ(loaded.faults.size(), 6u);
   EXPECT_EQ(loaded.faults[0].kind, fault_kind::crash);
   EXPECT_EQ(loaded.faults[0].peer, std::nullopt);
   EXPECT_EQ(loaded.faults[1].kind, fault_kind::crash_and_recover);
@@ -191,6 +191,20 @@ TEST(scenario_loader, reads_every_field_of_a_full_scenario) {
   EXPECT_EQ(loaded.faults[4].camera, 2);
   EXPECT_EQ(loaded.faults[4].length, 5s);
   EXPECT_EQ(loaded.faults[4].loss_probability, 0.8);
+  EXPECT_EQ(loaded.faults[5].kind, fault_kind::delay_spike);
+  EXPECT_EQ(loaded.faults[5].length, 4s);
+  EXPECT_EQ(loaded.faults[5].delay, 1500ms);
+}
+
+TEST(scenario_loader, a_delay_spike_needs_its_delay) {
+  const std::string cameras = "cameras:\n  - {id: 1, position: [0, 0]}\n";
+  try {
+    parse_scenario(cameras + "faults:\n  - {at: 1 s, kind: delay_spike, camera: 1, length: 2 s}\n",
+                   "x.yaml");
+    FAIL() << "a delay_spike without its delay was taken";
+  } catch (const scenario_error& e) {
+    EXPECT_NE(std::string(e.what()).find("faults[0].delay"), std::string::npos) << e.what();
+  }
 }
 
 TEST(scenario_loader, color_response_on_enables_the_default_response) {
