@@ -531,7 +531,10 @@ void camera_controller::on_handover(const protocol::handover& h, controller_outp
     last_leader_status_ = now_;
     return;
   }
-  become_leader("handover", out, h.term);
+  // The hand-over's epoch is one past the old leader's; this node may know a newer one (a
+  // leadership of its own that the old leader never heard of, during a partition, say): a new
+  // leadership is past every epoch its node has heard, or it would take up an ended term.
+  become_leader("handover", out, std::max(h.term, next_term(h.task.task)));
   for (int m : h.members)
     if (m != me_.id) members_[m] = member_record{0.0, now_, now_};
 }
@@ -1244,14 +1247,17 @@ void camera_controller::take_place(const protocol::csp_result& r, controller_out
     if (!same_task) {
       if (task_) leave_task("reassigned", out);
       pending_.clear();
-      start_task(mine->task, group_role::leader, me_.id, mine->relevance, now_, mine->term, out);
+      // Past every epoch this node has heard of the task, as any new leadership.
+      const auto term = std::max(mine->term, next_term(t));
+      start_task(mine->task, group_role::leader, me_.id, mine->relevance, now_, term, out);
       pinned_until_ = pin;
       emit(out, events::joined{.task = t, .leader = me_.id, .reassign = true, .term = term_});
       emit_leader_changed(me_.id, mine->previous, "conflict", out);
     } else if (role_ != group_role::leader) {
+      const auto term = std::max(mine->term, next_term(t));
       role_ = group_role::leader;
       leader_ = me_.id;
-      term_ = mine->term;
+      term_ = term;
       handed_over_at_.reset();
       forget_group();
       pinned_until_ = pin;
