@@ -62,6 +62,7 @@ nlohmann::json verdict_json(const apps::chaos_plan& plan, const report::chaos_ve
           {"safe", v.safe(bounds)},
           {"live", v.live()},
           {"terms_broken", v.terms_broken},
+          {"terms_reused_after_recovery", v.terms_reused_after_recovery},
           {"same_epoch_leaderships", v.same_epoch_leaderships},
           {"camera_in_two_groups", v.camera_in_two_groups},
           {"messages_after_cancel", v.messages_after_cancel},
@@ -143,7 +144,8 @@ class campaign {
   int summarise() const {
     nlohmann::json seeds = nlohmann::json::array();
     std::ofstream csv(dir_ / "chaos.csv");
-    csv << "seed,merge,sensing,faults,safe,live,terms_broken,same_epoch_leaderships,"
+    csv << "seed,merge,sensing,faults,safe,live,terms_broken,terms_reused_after_recovery,"
+           "same_epoch_leaderships,"
            "camera_in_two_groups,messages_after_cancel,peak_messages_per_task_s,peak_rss_mib,"
            "live_tasks,led_in_time,wall_s\n";
     std::size_t done = 0, unsafe = 0, live_runs = 0, not_live = 0;

@@ -61,8 +61,10 @@ class group_replay {
       leave(camera);
     } else if (kind == "fault") {
       if (e.value("applied", false) &&
-          (text_field(e, "fault") == "crash" || text_field(e, "fault") == "crash_and_recover"))
+          (text_field(e, "fault") == "crash" || text_field(e, "fault") == "crash_and_recover")) {
         leave(camera);
+        ++incarnation_[camera];  // it comes back with nothing in memory
+      }
     } else if (kind == "task_cancelled") {
       cancelled_.insert(task);
     }
@@ -97,16 +99,20 @@ class group_replay {
   void end_term(int camera) {
     auto it = places_.find(camera);
     if (it == places_.end() || !it->second.leads) return;
-    ended_.insert({it->second.task, it->second.epoch, camera});
+    ended_[{it->second.task, it->second.epoch, camera}] = incarnation_[camera];
   }
 
   void start_term(int camera, double t) {
     const auto& p = places_.at(camera);
     if (p.epoch < 0) return;
-    if (ended_.count({p.task, p.epoch, camera}) != 0) {
-      ++out_.terms_broken;
-      problem(t, fmt::format("camera {} took up task {}'s term (epoch {}) again after it ended",
-                             camera, p.task, p.epoch));
+    if (auto ended = ended_.find({p.task, p.epoch, camera}); ended != ended_.end()) {
+      if (ended->second == incarnation_[camera]) {
+        ++out_.terms_broken;
+        problem(t, fmt::format("camera {} took up task {}'s term (epoch {}) again after it ended",
+                               camera, p.task, p.epoch));
+      } else {
+        ++out_.terms_reused_after_recovery;
+      }
     }
     for (const auto& [other, q] : places_)
       if (other != camera && q.leads && q.task == p.task && q.epoch == p.epoch)
@@ -119,7 +125,8 @@ class group_replay {
 
   chaos_verdict& out_;
   std::map<int, place> places_;
-  std::set<std::tuple<long long, long long, int>> ended_;
+  std::map<std::tuple<long long, long long, int>, int> ended_;  // term -> the incarnation
+  std::map<int, int> incarnation_;
   std::set<long long> cancelled_;
 };
 

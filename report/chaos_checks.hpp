@@ -31,6 +31,10 @@ struct chaos_verdict {
   /// taken up again, so that two leaderships shared one term; or a camera's epoch in a task
   /// going back while it stayed in the task.
   std::uint64_t terms_broken = 0;
+  /// Not counted as broken: a term taken up again by a camera that crashed and came back since
+  /// it ended. A node keeps nothing across a crash (the paper's nodes have no stable storage),
+  /// so it cannot know it led that epoch; Raft keeps its term on disk for this (docs/chaos.md).
+  std::uint64_t terms_reused_after_recovery = 0;
   /// Not a fault: how often a camera took an epoch of a task that another camera then led too
   /// (two members taking over at once, say); the merge rule settles them.
   std::uint64_t same_epoch_leaderships = 0;

@@ -83,6 +83,20 @@ TEST(chaos_checks, a_term_taken_up_again_is_caught) {
   EXPECT_EQ(v.terms_broken, 1u);
 }
 
+TEST(chaos_checks, a_term_taken_up_again_after_a_crash_is_counted_apart) {
+  // Camera 2 crashed after leading epoch 5, came back with nothing in memory and, never having
+  // heard of epochs 4 and 5 from anyone, leads epoch 5 again.
+  const auto v = check_chaos_log(
+      log_of(ordinary +
+             R"({"t":41,"kind":"fault","camera":2,"fault":"crash_and_recover","applied":true})"
+             "\n"
+             R"({"t":45,"kind":"task_created","camera":2,"task":0,"term":5})"
+             "\n"),
+      reachable_target(), 50.0, bounds());
+  EXPECT_EQ(v.terms_broken, 0u);
+  EXPECT_EQ(v.terms_reused_after_recovery, 1u);
+}
+
 TEST(chaos_checks, an_epoch_that_goes_back_is_caught) {
   const auto v = check_chaos_log(
       log_of(
