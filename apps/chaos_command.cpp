@@ -167,12 +167,13 @@ class campaign {
           std::max(peak_messages, v.value("peak_messages_per_task_s", std::uint64_t{0}));
       peak_memory = std::max(peak_memory, v.value("peak_rss_mib", 0.0));
       csv << fmt::format(
-          "{},{},{},{},{},{},{},{},{},{},{},{:.1f},{},{},{:.2f}\n", s, v.value("merge", ""),
+          "{},{},{},{},{},{},{},{},{},{},{},{},{:.1f},{},{},{:.2f}\n", s, v.value("merge", ""),
           v.value("sensing", ""), v.value("faults", 0), safe ? 1 : 0, live ? 1 : 0,
-          v.value("terms_broken", 0), v.value("same_epoch_leaderships", 0),
-          v.value("camera_in_two_groups", 0), v.value("messages_after_cancel", 0),
-          v.value("peak_messages_per_task_s", 0), v.value("peak_rss_mib", 0.0),
-          v.value("live_tasks", 0), v.value("led_in_time", 0), v.value("wall_s", 0.0));
+          v.value("terms_broken", 0), v.value("terms_reused_after_recovery", 0),
+          v.value("same_epoch_leaderships", 0), v.value("camera_in_two_groups", 0),
+          v.value("messages_after_cancel", 0), v.value("peak_messages_per_task_s", 0),
+          v.value("peak_rss_mib", 0.0), v.value("live_tasks", 0), v.value("led_in_time", 0),
+          v.value("wall_s", 0.0));
       seeds.push_back(v);
     }
     const double live_share =
