@@ -481,6 +481,13 @@ void camera_controller::on_status(int from, const protocol::status& s, controlle
     last_leader_status_ = now_;
     leader_members_ = s.members;
     if (s.leader != s.sender) {
+      // Fig. 15's two leaders can each accept the other's demote (each sent its own only after
+      // the other's arrived): then this node's leader follows this node. It leads, at a new
+      // epoch: following itself, nobody would lead, and its old epoch has ended.
+      if (s.leader == me_.id) {
+        become_leader("leader_demoted", out);
+        return;
+      }
       follow_leader(s.leader, s.term, "leader_demoted", out);
       return;
     }

@@ -57,7 +57,7 @@ class group_replay {
     } else if (kind == "handoff") {
       end_term(camera);
       if (auto it = places_.find(camera); it != places_.end()) it->second.leads = false;
-    } else if (kind == "left_task" || kind == "node_recovered") {
+    } else if (kind == "left_task") {
       leave(camera);
     } else if (kind == "fault") {
       if (e.value("applied", false) &&

@@ -264,6 +264,30 @@ TEST(group_protocol, a_leader_merged_through_a_member_hears_its_new_leader_throu
   EXPECT_EQ(h.count("leader_changed", 3), 0u);
 }
 
+// Fig. 15's two leaders can each accept the other's demote: camera 3 follows 16 at epoch 2,
+// and 16's status says 16 now follows 3. Camera 3 must lead, at an epoch past 2 (argus chaos,
+// penn_station seeds 540 and 690: it followed itself and took its ended epoch up again).
+TEST(group_protocol, a_leader_whose_leader_follows_it_leads_at_a_new_epoch) {
+  const auto s = test_scenario({3});
+  camera_controller node(node_identity::from(s.cameras.front()), s);
+  const auto task = test_task(1, 4);
+  std::int64_t tick = 0;
+  const auto step = [&](std::vector<received_message> messages) {
+    controller_input in;
+    in.tick = tick++;
+    in.pose = node_identity::from(s.cameras.front()).home;
+    in.messages = std::move(messages);
+    return node.step(in);
+  };
+  step({{16, protocol::join{task, 16, 2, 3, false}}});
+  ASSERT_EQ(node.leader(), 16);
+  ASSERT_EQ(node.term(), 2u);
+  step({{16, protocol::status{task.task, 16, 3, 2, 0.9, 1, 4, {}, false}}});
+  EXPECT_EQ(node.role(), group_role::leader);
+  EXPECT_EQ(node.leader(), 3);
+  EXPECT_GT(node.term(), 2u);
+}
+
 // Camera 3 follows leader 16 and relays for camera 9, which 16's last status did not list (out
 // of 16's reach, as far as 3 can tell). 16's own statuses go on to 9; a copy of one that another
 // member relayed must not: in seed 6 of penn_station (with the re-taken model) members 3, 4

@@ -97,6 +97,20 @@ TEST(chaos_checks, a_term_taken_up_again_after_a_crash_is_counted_apart) {
   EXPECT_EQ(v.terms_reused_after_recovery, 1u);
 }
 
+TEST(chaos_checks, a_recovery_of_a_camera_that_was_up_changes_nothing) {
+  // A second crash_and_recover's recovery for a camera that is up is logged, not applied.
+  const auto v = check_chaos_log(
+      log_of(
+          ordinary +
+          R"({"t":41,"kind":"node_recovered","camera":2,"applied":false})"
+          "\n"
+          R"({"t":42,"kind":"leader_changed","camera":2,"task":0,"leader":2,"previous":2,"reason":"merged","term":6})"
+          "\n"),
+      reachable_target(), 50.0, bounds());
+  EXPECT_EQ(v.camera_in_two_groups, 0u);
+  EXPECT_TRUE(v.problems.empty());
+}
+
 TEST(chaos_checks, an_epoch_that_goes_back_is_caught) {
   const auto v = check_chaos_log(
       log_of(
