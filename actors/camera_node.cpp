@@ -9,6 +9,7 @@
 #include "actors/render_pool.hpp"
 #include "actors/tick_context.hpp"
 #include "actors/type_ids.hpp"
+#include "caf/sec.hpp"
 #include "controller/strategy_registry.hpp"
 #include "fmt/format.h"
 #include "protocol/link_model.hpp"
@@ -215,18 +216,18 @@ void take_turn(node_actor* self, std::int64_t tick, std::uint8_t p, const caf::a
   request.time_s = st.snap->time().count();
   request.field_interval_s = st.tick_length.count() / 2.0;
   request.imaging = std::move(st.imaging);
-  self->request(st.world->render_pool, caf::infinite, render_atom_v, std::move(request))
-      .then(
-          [self](render_result& result) {
-            self->state.imaging = std::move(result.imaging);
-            finish_turn(self, result.image);
-          },
-          [self](caf::error& err) {
-            auto& st = self->state;
-            st.ctx->emit(events::render_failed{.camera = st.camera_id,
-                                               .error_code = static_cast<int>(err.code())});
-            finish_turn(self, {});
-          });
+  render_result result;
+  try {
+    result = st.world->renderers->render(std::move(request));
+  } catch (const std::exception&) {
+    // As a render worker's failure came back through CAF: a handler's exception.
+    st.ctx->emit(events::render_failed{.camera = st.camera_id,
+                                       .error_code = static_cast<int>(caf::sec::runtime_error)});
+    finish_turn(self, {});
+    return;
+  }
+  st.imaging = std::move(result.imaging);
+  finish_turn(self, result.image);
 }
 
 // A turn waits until every hand-over the clock announced for it has come (docs/network.md).

@@ -9,6 +9,7 @@
 #include "actors/node_observer.hpp"
 #include "actors/operator_board.hpp"
 #include "actors/participant_info.hpp"
+#include "actors/shared_renderers.hpp"
 #include "actors/snapshot_board.hpp"
 #include "caf/actor.hpp"
 #include "caf/fwd.hpp"
@@ -37,8 +38,8 @@ using link_directory = std::map<int, attached_link>;
 struct camera_world {
   std::shared_ptr<const world::station> station;
   std::shared_ptr<snapshot_board> board;
-  /// The render pool's front; null unless sensors need images.
-  caf::actor render_pool;
+  /// The renderers nodes render their own frames on; null unless sensors need images.
+  std::shared_ptr<shared_renderers> renderers;
   vision::sensor_model sensor_model;
   /// The host's instruments (eval/): each node's sensor and strategy go through these once made;
   /// unset: none.
@@ -73,7 +74,8 @@ participant_info camera_participant(const config::camera_settings& camera);
 /// behaviour: `idle`, `computing_relevance` and `performing_task` (the strategy's status), switched
 /// with `become` after each turn; they share the link-mail handlers. A node senses only when the
 /// strategy's plan or the operator wants a frame; its sensor then looks, at the head's pose, on a
-/// frame from the render pool if it needs pixels. `(node_state_atom)` answers the behaviour's name.
+/// frame it renders itself (shared_renderers) if it needs pixels. `(node_state_atom)` answers the
+/// behaviour's name.
 ///
 /// Each turn: the messages its links delivered (decoded; bytes that are not a protocol message
 /// are logged `bad_message` and dropped), the operator's tasks for this camera due now (from

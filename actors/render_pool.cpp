@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "actors/type_ids.hpp"
+#include "vision/capture.hpp"
 #include "vision/renderer.hpp"
 
 namespace argus::actors {
@@ -69,16 +70,13 @@ caf::behavior render_front(caf::stateful_actor<render_front_state>* self,
 render_result render_frame(vision::renderer& renderer, render_request request) {
   render_result out;
   const auto& frame = *request.frame;
-  out.image = renderer.render(request.view, frame, request.time_s);
-  if (request.imaging) {
-    auto& model = *request.imaging;
-    out.image =
-        model.interlaced()
-            ? model.apply(out.image, renderer.render(request.view, frame,
-                                                     request.time_s + request.field_interval_s))
-            : model.apply(out.image);
-    out.imaging = std::move(request.imaging);
+  if (!request.imaging) {
+    out.image = renderer.render(request.view, frame, request.time_s);
+    return out;
   }
+  out.image = vision::capture(renderer, request.view, frame, request.time_s,
+                              request.field_interval_s, *request.imaging);
+  out.imaging = std::move(request.imaging);
   return out;
 }
 

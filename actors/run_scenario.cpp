@@ -136,13 +136,19 @@ run_outcome run_scenario(const config::scenario& scenario, const run_options& op
   const auto station = world_settings.station;
   render_pool pool;
   const bool pixels = scenario.sensing.mode == config::sensing_mode::pixels;
-  if (options.video || pixels)
-    pool = spawn_render_pool(system, world_settings.station,
-                             options.render_threads != 0 ? options.render_threads : threads);
+  const std::size_t renderers = options.render_threads != 0 ? options.render_threads : threads;
+  if (options.video) pool = spawn_render_pool(system, world_settings.station, renderers);
   auto cameras_world = std::make_shared<camera_world>();
   cameras_world->station = world_settings.station;
   cameras_world->board = std::make_shared<snapshot_board>();
-  if (pixels) cameras_world->render_pool = pool.front;
+  try {
+    if (pixels)
+      cameras_world->renderers =
+          std::make_shared<shared_renderers>(world_settings.station, renderers);
+  } catch (...) {
+    if (pool.front) caf::anon_send_exit(pool.front, caf::exit_reason::user_shutdown);
+    throw;
+  }
   if (!scenario.sensing.sensor_model.empty())
     cameras_world->sensor_model = vision::load_sensor_model(sensor_model_path(scenario).string());
   auto log = std::make_shared<eval::observation_log>(options.mot);

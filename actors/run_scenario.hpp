@@ -30,7 +30,8 @@ struct run_options {
   /// Size of one camera's tile in the video, pixels.
   int video_width_px = 320;
   int video_height_px = 240;
-  /// Render workers (EGL contexts) for the video; 0 = as many as scheduler threads.
+  /// Renderers (EGL contexts) for pixel sensing, and render workers for the video; 0 = as many
+  /// as scheduler threads.
   std::size_t render_threads = 0;
   /// Also write the run in MOTChallenge format to `<output dir>/mot` (ground truth of every
   /// camera's every frame: a visibility pass per camera per frame).

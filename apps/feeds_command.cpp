@@ -19,6 +19,7 @@
 #include "config/scenario_loader.hpp"
 #include "config/ticks.hpp"
 #include "fmt/format.h"
+#include "vision/capture.hpp"
 #include "vision/feed_mosaic.hpp"
 #include "vision/imaging_model.hpp"
 #include "vision/renderer.hpp"
@@ -84,15 +85,15 @@ int feeds(const feeds_arguments& args) {
       const auto& camera = cameras[static_cast<std::size_t>(k)];
       vision::camera_view view{vision::camera_placement::from(camera),
                                vision::ptz_camera::from(camera).state(), args.width, args.height};
-      cv::Mat tile = renderer.render(view, frame, t);
-      if (!args.raw) {
+      cv::Mat tile;
+      if (args.raw) {
+        tile = renderer.render(view, frame, t);
+      } else {
         config::imaging_model imaging = camera.imaging;
         imaging.width_px = static_cast<unsigned>(args.width);
         imaging.height_px = static_cast<unsigned>(args.height);
         auto model = vision::imaging_model::for_camera(imaging, scenario.run.seed, camera.id);
-        tile = model.interlaced()
-                   ? model.apply(tile, renderer.render(view, frame, t + tick_s / 2.0))
-                   : model.apply(tile);
+        tile = vision::capture(renderer, view, frame, t, tick_s / 2.0, model);
       }
       vision::label_feed(tile, camera.id);
       tile.copyTo(mosaic(layout.tile(static_cast<std::size_t>(k))));

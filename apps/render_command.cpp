@@ -16,6 +16,7 @@
 #include "config/scenario_loader.hpp"
 #include "config/ticks.hpp"
 #include "fmt/format.h"
+#include "vision/capture.hpp"
 #include "vision/imaging_model.hpp"
 #include "vision/renderer.hpp"
 #include "world/crowd.hpp"
@@ -83,14 +84,14 @@ int render(const render_arguments& args) {
         static_cast<int>(imaging.width_px), static_cast<int>(imaging.height_px)};
     vision::renderer renderer(station);
     const auto& frame = *crowd.current();
-    cv::Mat image = renderer.render(view, frame, t);
-    if (!args.raw) {
+    cv::Mat image;
+    if (args.raw) {
+      image = renderer.render(view, frame, t);
+    } else {
       auto model = vision::imaging_model::for_camera(imaging, scenario.run.seed, camera->id);
       // The second field is rendered half a frame later; pedestrians stand where the
       // snapshot has them (the crowd steps once per frame), only their gait moves on.
-      image = model.interlaced()
-                  ? model.apply(image, renderer.render(view, frame, t + tick_s / 2.0))
-                  : model.apply(image);
+      image = vision::capture(renderer, view, frame, t, tick_s / 2.0, model);
     }
     make_parent_folders(args.out);
     if (!cv::imwrite(args.out, image)) {

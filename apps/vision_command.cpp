@@ -18,6 +18,7 @@
 #include "config/ticks.hpp"
 #include "fmt/format.h"
 #include "nlohmann/json.hpp"
+#include "vision/capture.hpp"
 #include "vision/imaging_model.hpp"
 #include "vision/multiscale_localizer.hpp"
 #include "vision/patch_search.hpp"
@@ -163,11 +164,8 @@ int calibrate(const calibrate_arguments& args) {
         const double t = static_cast<double>(tick) * tick_s;
         const auto& frame = *crowd.current();
         for (auto& camera : cameras) {
-          cv::Mat image = renderer.render(camera.view, frame, t);
-          image = camera.imaging.interlaced()
-                      ? camera.imaging.apply(image,
-                                             renderer.render(camera.view, frame, t + tick_s / 2.0))
-                      : camera.imaging.apply(image);
+          cv::Mat image =
+              vision::capture(renderer, camera.view, frame, t, tick_s / 2.0, camera.imaging);
           auto more = vision::pixel_trials(image, frame, *station, camera.view, 0.4, kernels);
           trials.insert(trials.end(), more.begin(), more.end());
         }

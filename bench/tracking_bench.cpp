@@ -47,6 +47,7 @@
 #include "config/scenario_loader.hpp"
 #include "config/ticks.hpp"
 #include "fmt/format.h"
+#include "vision/capture.hpp"
 #include "vision/color_histogram.hpp"
 #include "vision/emulated_sensor.hpp"
 #include "vision/fixate_zoom.hpp"
@@ -133,9 +134,7 @@ cv::Point2d centre_of(const cv::Rect2d& box) {
 cv::Mat capture(vision::renderer& render, follower& f, const world::snapshot& frame, int tick,
                 double tick_s, int width_px, int height_px) {
   const auto view = view_of(f, width_px, height_px);
-  cv::Mat image = render.render(view, frame, tick * tick_s);
-  if (!f.imaging.interlaced()) return f.imaging.apply(image);
-  return f.imaging.apply(image, render.render(view, frame, (tick + 0.5) * tick_s));
+  return vision::capture(render, view, frame, tick * tick_s, tick_s / 2.0, f.imaging);
 }
 
 // Chooses the target and the zoomed starting pose; false when the camera sees nobody usable.

@@ -8,6 +8,7 @@
 
 #include "config/derive_seed.hpp"
 #include "fmt/format.h"
+#include "vision/capture.hpp"
 #include "vision/feed_mosaic.hpp"
 #include "vision/imaging_model.hpp"
 #include "vision/ptz_camera.hpp"
@@ -114,10 +115,7 @@ std::vector<std::vector<cv::Mat>> render_on_this_thread(
           config::derive_seed(config::derive_seed(scenario.run.seed, feeds_seed_tag),
                               static_cast<std::uint64_t>(tick)),
           camera->id);
-      cv::Mat image = renderer.render(view, snapshot, time_s);
-      image = model.interlaced()
-                  ? model.apply(image, renderer.render(view, snapshot, time_s + tick_s / 2.0))
-                  : model.apply(image);
+      cv::Mat image = vision::capture(renderer, view, snapshot, time_s, tick_s / 2.0, model);
       if (frame.failed) vision::mark_failed_feed(image);
       draw_boxes(image, tracks.at(frame.camera, tick));
       vision::label_feed(image, frame.camera);

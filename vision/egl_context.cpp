@@ -61,6 +61,13 @@ bool has_extension(const char* list, const char* name) {
 
 egl_context::egl_context() {
   std::lock_guard guard(setup_mutex());
+  // Mesa's llvmpipe hands each frame's tiles to rasterizer threads of its own (one per core by
+  // default) and waits for them. Argus renders from as many threads as it has cores already,
+  // one context each, so those threads only add two hand-overs per frame and compete for the
+  // same cores: rasterizing on the calling thread renders the same pixels 13 % faster through
+  // the render pool (bench/RESULTS.md, "Pixels at speed"). Read when the display is first
+  // initialised; a user's own setting wins. GPUs ignore it.
+  setenv("LP_NUM_THREADS", "0", 0);
   const char* client = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
   auto get_platform_display = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(
       eglGetProcAddress("eglGetPlatformDisplayEXT"));

@@ -1,6 +1,7 @@
 #include "vision/imaging_model.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <opencv2/imgcodecs.hpp>
@@ -67,7 +68,13 @@ cv::Mat imaging_model::apply(const cv::Mat& frame) {
 
 cv::Mat imaging_model::apply(const cv::Mat& first_field, const cv::Mat& second_field) {
   require_bgr(first_field, "imaging_model");
-  cv::Mat out = settings_.interlace ? weave_fields(first_field, second_field) : first_field.clone();
+  return degrade(settings_.interlace ? weave_fields(first_field, second_field)
+                                     : first_field.clone());
+}
+
+cv::Mat imaging_model::degrade(cv::Mat frame) {
+  require_bgr(frame, "imaging_model");
+  cv::Mat out = std::move(frame);
   if (settings_.color_response_enabled) apply_color_response(out, settings_.response);
   if (settings_.noise_sigma > 0.0) add_detector_noise(out, settings_.noise_sigma, rng_);
   if (settings_.dropout_fraction > 0.0) {
@@ -90,8 +97,8 @@ cv::Mat weave_fields(const cv::Mat& first_field, const cv::Mat& second_field) {
   return out;
 }
 
-void apply_color_response(cv::Mat& frame, const config::color_response& r) {
-  require_bgr(frame, "apply_color_response");
+void apply_color_response_to_every_pixel(cv::Mat& frame, const config::color_response& r) {
+  require_bgr(frame, "apply_color_response_to_every_pixel");
   const bool hsv_identity = r.hue_offset_deg == 0.0 && r.saturation_gain == 1.0 &&
                             r.value_gain == 1.0 && r.value_offset == 0.0;
   if (!hsv_identity) {
@@ -122,6 +129,98 @@ void apply_color_response(cv::Mat& frame, const config::color_response& r) {
   mix(r.tone, 127.5);
   mix(r.shade, 0.0);
   if (scale != 1.0 || offset != 0.0) frame.convertTo(frame, CV_8UC3, scale, offset);
+}
+
+namespace {
+
+// The distinct colours of a frame (open addressing on the packed colour, in a table small
+// enough to stay in the first-level cache); gives up past `most` colours.
+class palette {
+ public:
+  static constexpr std::uint16_t empty = 0xffff;
+  static constexpr std::size_t most = 2048;
+
+  explicit palette(const cv::Mat& frame) {
+    slots_.fill(empty);
+    const auto* p = frame.ptr<cv::Vec3b>();
+    const std::size_t n = frame.total();
+    std::uint32_t last = pack(p[0]) + 1;  // not p[0]'s
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::uint32_t key = pack(p[i]);
+      if (key == last) continue;
+      last = key;
+      std::size_t h = slot_of(key);
+      if (slots_[h] == empty) {
+        if (colours_.size() == most) {
+          complete_ = false;
+          return;
+        }
+        slots_[h] = static_cast<std::uint16_t>(colours_.size());
+        colours_.push_back(key);
+      }
+    }
+  }
+  bool complete() const noexcept { return complete_; }
+  std::size_t size() const noexcept { return colours_.size(); }
+  std::uint32_t colour(std::size_t k) const { return colours_[k]; }
+  /// The index of a colour of the frame.
+  std::size_t index_of(const cv::Vec3b& pixel) const { return slots_[slot_of(pack(pixel))]; }
+  static std::uint32_t pack(const cv::Vec3b& p) {
+    return p[0] | (static_cast<std::uint32_t>(p[1]) << 8) |
+           (static_cast<std::uint32_t>(p[2]) << 16);
+  }
+
+ private:
+  static constexpr std::size_t slots = 2 * most;
+  // The slot holding `key`, or the empty one where it would go.
+  std::size_t slot_of(std::uint32_t key) const {
+    std::size_t h = ((key * 0x9e3779b1u) >> 16) & (slots - 1);
+    while (slots_[h] != empty && colours_[slots_[h]] != key) h = (h + 1) & (slots - 1);
+    return h;
+  }
+  std::array<std::uint16_t, slots> slots_;
+  std::vector<std::uint32_t> colours_;
+  bool complete_ = true;
+};
+
+}  // namespace
+
+void apply_color_response(cv::Mat& frame, const config::color_response& r) {
+  require_bgr(frame, "apply_color_response");
+  if (!frame.isContinuous()) frame = frame.clone();
+  // The response is a function of each pixel's colour alone, and a rendered frame (flat faces,
+  // a two-tone floor) has a few hundred colours in 76,800 pixels: each colour is transformed
+  // once, in rows as wide as the frame's (so that OpenCV takes the same code path for every
+  // pixel as on the frame itself: the same bytes), and painted back. A frame of many colours
+  // (noise before the response, a photograph) is transformed whole.
+  const palette colours(frame);
+  if (!colours.complete()) {
+    apply_color_response_to_every_pixel(frame, r);
+    return;
+  }
+  const int width = frame.cols;
+  const auto count = static_cast<int>(colours.size());
+  cv::Mat swatches((count + width - 1) / width, width, CV_8UC3, cv::Scalar(0, 0, 0));
+  auto* s = swatches.ptr<cv::Vec3b>();
+  for (int k = 0; k < count; ++k) {
+    const auto c = colours.colour(static_cast<std::size_t>(k));
+    s[k] =
+        cv::Vec3b(static_cast<uchar>(c), static_cast<uchar>(c >> 8), static_cast<uchar>(c >> 16));
+  }
+  apply_color_response_to_every_pixel(swatches, r);
+  s = swatches.ptr<cv::Vec3b>();
+  auto* p = frame.ptr<cv::Vec3b>();
+  const std::size_t n = frame.total();
+  // Neighbours mostly share a colour: the last one's answer is kept.
+  cv::Vec3b last_in = p[0];
+  cv::Vec3b last_out = s[colours.index_of(p[0])];
+  for (std::size_t i = 0; i < n; ++i) {
+    if (p[i] != last_in) {
+      last_in = p[i];
+      last_out = s[colours.index_of(p[i])];
+    }
+    p[i] = last_out;
+  }
 }
 
 void add_detector_noise(cv::Mat& frame, double sigma, cv::RNG& rng) {

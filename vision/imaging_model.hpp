@@ -36,6 +36,10 @@ class imaging_model {
   /// only `first_field` is used.
   cv::Mat apply(const cv::Mat& first_field, const cv::Mat& second_field);
 
+  /// Degrades a frame whose fields are woven already (renderer::render_interlaced), or a
+  /// progressive one: colour response, noise, dropout and JPEG, without the weave.
+  cv::Mat degrade(cv::Mat frame);
+
   /// Whether the renderer should provide two fields per frame.
   bool interlaced() const noexcept { return settings_.interlace; }
 
@@ -61,6 +65,11 @@ cv::Mat weave_fields(const cv::Mat& first_field, const cv::Mat& second_field);
 /// 1 = 255), clipped to range; then c = (1 - tint) c + tint white, c = (1 - tone) c + tone
 /// grey (50 %), c = (1 - shade) c (mixing with black), in that order.
 void apply_color_response(cv::Mat& frame, const config::color_response& response);
+
+/// The same response computed for every pixel of the frame, in OpenCV's passes over it:
+/// what apply_color_response does to a frame of many colours, and the reference it is tested
+/// against (it transforms each distinct colour of a rendered frame once).
+void apply_color_response_to_every_pixel(cv::Mat& frame, const config::color_response& response);
 
 /// Adds zero-mean Gaussian noise of `sigma` (8-bit units) to every channel, saturating.
 void add_detector_noise(cv::Mat& frame, double sigma, cv::RNG& rng);

@@ -109,6 +109,25 @@ bool maybe_visible(const camera_view& view, const Eigen::Matrix3d& axes,
          std::abs(c.y()) <= z * half_h + reach_m * std::sqrt(1.0 + half_h * half_h);
 }
 
+// Rows come out top-down (flip_y), as OpenCV stores them: no flip after read-back.
+Eigen::Matrix4f view_projection(const camera_view& view) {
+  return view.gl_projection(renderer::near_m, renderer::far_m, true) * view.gl_view();
+}
+
+// Maps the frame's clip space to that of field `parity` (0: rows 0, 2, ...; 1: rows 1, 3, ...)
+// of `rows` rows drawn into a viewport of its own: the centre of the field's row k lands
+// where the centre of the frame's row 2k + parity was. In window coordinates of a frame of
+// `height` rows, y' = (y - parity + 1/2) / 2; in normalised device coordinates that is
+// y'_ndc = y_ndc * height / (2 rows) + (height / 2 - parity + 1/2) / rows - 1.
+Eigen::Matrix4f field_projection(int height, int parity, int rows) {
+  Eigen::Matrix4f m = Eigen::Matrix4f::Identity();
+  const double scale = static_cast<double>(height) / (2.0 * rows);
+  const double offset = (height / 2.0 - parity + 0.5) / rows - 1.0;
+  m(1, 1) = static_cast<float>(scale);
+  m(1, 3) = static_cast<float>(offset);
+  return m;
+}
+
 }  // namespace
 
 struct renderer::gl_objects {
@@ -263,17 +282,53 @@ cv::Mat renderer::render(const camera_view& view, const world::snapshot& frame, 
   return render(view, frame.pedestrians(), time_s);
 }
 
-cv::Mat renderer::render(const camera_view& view, std::span<const world::pedestrian_state> people,
-                         double time_s) {
-  boxes_.clear();
+void renderer::collect_boxes(const camera_view& view,
+                             std::span<const world::pedestrian_state> people, double time_s,
+                             std::vector<box_instance>& out) const {
+  out.clear();
   const Eigen::Matrix3d axes = view.orientation();
   for (const auto& p : people) {
     const double h = p.look.height_m;
     const Eigen::Vector3d centre{p.position.x(), p.position.y(), h / 2.0};
     if (!maybe_visible(view, axes, centre, 0.6 * h + 0.5)) continue;
-    append_pedestrian(p, time_s, boxes_);
+    append_pedestrian(p, time_s, out);
   }
-  return draw(view, station_ != nullptr, boxes_, true, {64, 64, 70});
+}
+
+cv::Mat renderer::render(const camera_view& view, std::span<const world::pedestrian_state> people,
+                         double time_s) {
+  collect_boxes(view, people, time_s, boxes_);
+  const pass whole{0, view.height_px, view_projection(view), &boxes_};
+  return draw(view, station_ != nullptr, std::span{&whole, 1}, true, {64, 64, 70});
+}
+
+cv::Mat renderer::render_interlaced(const camera_view& view, const world::snapshot& frame,
+                                    double first_time_s, double second_time_s) {
+  return render_interlaced(view, frame.pedestrians(), first_time_s, frame.pedestrians(),
+                           second_time_s);
+}
+
+cv::Mat renderer::render_interlaced(const camera_view& view,
+                                    std::span<const world::pedestrian_state> first_people,
+                                    double first_time_s,
+                                    std::span<const world::pedestrian_state> second_people,
+                                    double second_time_s) {
+  if (view.height_px < 2) return render(view, first_people, first_time_s);
+  collect_boxes(view, first_people, first_time_s, boxes_);
+  collect_boxes(view, second_people, second_time_s, second_boxes_);
+  // The even rows go to the framebuffer's top half, the odd rows below them.
+  const int even_rows = (view.height_px + 1) / 2;
+  const Eigen::Matrix4f whole = view_projection(view);
+  const pass fields[] = {
+      {0, even_rows, field_projection(view.height_px, 0, even_rows) * whole, &boxes_},
+      {even_rows, view.height_px / 2,
+       field_projection(view.height_px, 1, view.height_px / 2) * whole, &second_boxes_}};
+  const cv::Mat stacked = draw(view, station_ != nullptr, fields, true, {64, 64, 70});
+  cv::Mat woven(stacked.size(), stacked.type());
+  for (int k = 0; k < even_rows; ++k) stacked.row(k).copyTo(woven.row(2 * k));
+  for (int k = 0; k < view.height_px / 2; ++k)
+    stacked.row(even_rows + k).copyTo(woven.row(2 * k + 1));
+  return woven;
 }
 
 cv::Mat renderer::render_markers(const camera_view& view, std::span<const marker> markers,
@@ -284,11 +339,12 @@ cv::Mat renderer::render_markers(const camera_view& view, std::span<const marker
         make_box(m.position_m, Eigen::Vector3d::Constant(m.size_m),
                  Eigen::Vector3f{m.color.r / 255.0f, m.color.g / 255.0f, m.color.b / 255.0f}));
   }
-  return draw(view, false, boxes_, false, background);
+  const pass whole{0, view.height_px, view_projection(view), &boxes_};
+  return draw(view, false, std::span{&whole, 1}, false, background);
 }
 
-cv::Mat renderer::draw(const camera_view& view, bool with_station,
-                       const std::vector<box_instance>& boxes, bool lit, world::rgb8 background) {
+cv::Mat renderer::draw(const camera_view& view, bool with_station, std::span<const pass> passes,
+                       bool lit, world::rgb8 background) {
   if (view.width_px <= 0 || view.height_px <= 0) {
     throw std::invalid_argument(
         fmt::format("renderer: image size {}x{} is not positive", view.width_px, view.height_px));
@@ -303,37 +359,37 @@ cv::Mat renderer::draw(const camera_view& view, bool with_station,
     glClearColor(background.r / 255.0f, background.g / 255.0f, background.b / 255.0f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glUseProgram(g.program);
-    // Rows come out top-down (flip_y), as OpenCV stores them: no flip after read-back.
-    const Eigen::Matrix4f vp = view.gl_projection(near_m, far_m, true) * view.gl_view();
-    glUniformMatrix4fv(g.view_projection, 1, GL_FALSE, vp.data());
     const Eigen::Vector3f eye = view.placement.position_m.cast<float>();
     glUniform3f(g.eye, eye.x(), eye.y(), eye.z());
     glUniform1f(g.lit, lit ? 1.0f : 0.0f);
     glDisable(GL_CULL_FACE);
-
-    if (with_station && g.floor_vertices + g.solid_vertices > 0) {
-      glBindVertexArray(g.scene_vao);
-      set_identity_instance();
-      // Floor layers are coplanar: painter's order, no depth test, no z-fighting.
-      glDisable(GL_DEPTH_TEST);
-      glDrawArrays(GL_TRIANGLES, 0, g.floor_vertices);
+    for (const auto& p : passes) {
+      glViewport(0, p.first_row, view.width_px, p.rows);
+      glUniformMatrix4fv(g.view_projection, 1, GL_FALSE, p.view_projection.data());
+      if (with_station && g.floor_vertices + g.solid_vertices > 0) {
+        glBindVertexArray(g.scene_vao);
+        set_identity_instance();
+        // Floor layers are coplanar: painter's order, no depth test, no z-fighting.
+        glDisable(GL_DEPTH_TEST);
+        glDrawArrays(GL_TRIANGLES, 0, g.floor_vertices);
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_LESS);
+        glDrawArrays(GL_TRIANGLES, g.floor_vertices, g.solid_vertices);
+      }
       glEnable(GL_DEPTH_TEST);
       glDepthFunc(GL_LESS);
-      glDrawArrays(GL_TRIANGLES, g.floor_vertices, g.solid_vertices);
-    }
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    if (!boxes.empty()) {
-      glBindVertexArray(g.cube_vao);
-      glVertexAttrib4f(2, 1.0f, 1.0f, 1.0f, 0.0f);  // per-vertex colour: white, no pattern
-      glBindBuffer(GL_ARRAY_BUFFER, g.instance_vbo);
-      const auto bytes = static_cast<GLsizeiptr>(boxes.size() * sizeof(box_instance));
-      if (bytes > g.instance_capacity) {
-        g.instance_capacity = bytes * 2;
+      const auto& boxes = *p.boxes;
+      if (!boxes.empty()) {
+        glBindVertexArray(g.cube_vao);
+        glVertexAttrib4f(2, 1.0f, 1.0f, 1.0f, 0.0f);  // per-vertex colour: white, no pattern
+        glBindBuffer(GL_ARRAY_BUFFER, g.instance_vbo);
+        const auto bytes = static_cast<GLsizeiptr>(boxes.size() * sizeof(box_instance));
+        if (bytes > g.instance_capacity) g.instance_capacity = bytes * 2;
+        // New storage for every pass: the previous pass may still be reading the old one.
         glBufferData(GL_ARRAY_BUFFER, g.instance_capacity, nullptr, GL_STREAM_DRAW);
+        glBufferSubData(GL_ARRAY_BUFFER, 0, bytes, boxes.data());
+        glDrawArraysInstanced(GL_TRIANGLES, 0, 36, static_cast<GLsizei>(boxes.size()));
       }
-      glBufferSubData(GL_ARRAY_BUFFER, 0, bytes, boxes.data());
-      glDrawArraysInstanced(GL_TRIANGLES, 0, 36, static_cast<GLsizei>(boxes.size()));
     }
     glBindVertexArray(0);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);

@@ -54,6 +54,21 @@ class renderer {
   cv::Mat render(const camera_view& view, std::span<const world::pedestrian_state> people,
                  double time_s);
 
+  /// An interlaced frame as an interlaced sensor takes it (Section III-A): its even rows
+  /// (0, 2, ...) show `frame` at `first_time_s`, its odd rows at `second_time_s`. Each field is
+  /// rasterised at its own rows only, both in one pass and one read-back: the rows of two
+  /// full renders woven together (weave_fields), up to rounding at the edges of shapes, for
+  /// half their pixels.
+  cv::Mat render_interlaced(const camera_view& view, const world::snapshot& frame,
+                            double first_time_s, double second_time_s);
+
+  /// The same with the fields' pedestrians given directly (tests, tools).
+  cv::Mat render_interlaced(const camera_view& view,
+                            std::span<const world::pedestrian_state> first_people,
+                            double first_time_s,
+                            std::span<const world::pedestrian_state> second_people,
+                            double second_time_s);
+
   /// A test scene: unlit marker cubes on a uniform `background`, no station.
   cv::Mat render_markers(const camera_view& view, std::span<const marker> markers,
                          world::rgb8 background = {0, 0, 0});
@@ -67,13 +82,25 @@ class renderer {
 
  private:
   struct gl_objects;
-  cv::Mat draw(const camera_view& view, bool with_station, const std::vector<box_instance>& boxes,
-               bool lit, world::rgb8 background);
+  /// One rasterisation of the view into rows [first_row, first_row + rows) of the framebuffer.
+  struct pass {
+    int first_row = 0;
+    int rows = 0;
+    Eigen::Matrix4f view_projection;
+    const std::vector<box_instance>* boxes = nullptr;
+  };
+  void collect_boxes(const camera_view& view, std::span<const world::pedestrian_state> people,
+                     double time_s, std::vector<box_instance>& out) const;
+  /// Draws `passes` into a framebuffer of the view's size and reads it back (BGR, top row
+  /// first, as the framebuffer's rows are).
+  cv::Mat draw(const camera_view& view, bool with_station, std::span<const pass> passes, bool lit,
+               world::rgb8 background);
 
   egl_context context_;
   std::shared_ptr<const world::station> station_;
   std::unique_ptr<gl_objects> gl_;
-  std::vector<box_instance> boxes_;  // reused between frames
+  std::vector<box_instance> boxes_;         // reused between frames
+  std::vector<box_instance> second_boxes_;  // the second field's
 };
 
 }  // namespace argus::vision

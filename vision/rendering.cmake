@@ -16,6 +16,7 @@ else()
 endif()
 
 list(APPEND argus_vision_sources
+  ${CMAKE_CURRENT_LIST_DIR}/capture.cpp
   ${CMAKE_CURRENT_LIST_DIR}/egl_context.cpp
   ${CMAKE_CURRENT_LIST_DIR}/feed_mosaic.cpp
   ${CMAKE_CURRENT_LIST_DIR}/floor_estimate.cpp

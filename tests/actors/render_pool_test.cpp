@@ -19,6 +19,7 @@
 #include "config/scenario_loader.hpp"
 #include "report/camera_logs.hpp"
 #include "support/scene_checks.hpp"
+#include "vision/capture.hpp"
 #include "vision/feed_mosaic.hpp"
 #include "vision/renderer.hpp"
 #include "world/crowd.hpp"
@@ -167,10 +168,7 @@ TEST(render_pool, run_with_video_writes_one_frame_per_tick) {
     const auto& frame = *crowd.current();
     const double t = frame.time().count();
     for (std::size_t k = 0; k < cameras.size(); ++k) {
-      cv::Mat expected = direct.render(views[k], frame, t);
-      expected = models[k].interlaced()
-                     ? models[k].apply(expected, direct.render(views[k], frame, t + tick_s / 2.0))
-                     : models[k].apply(expected);
+      cv::Mat expected = vision::capture(direct, views[k], frame, t, tick_s / 2.0, models[k]);
       vision::label_feed(expected, cameras[k].id);
       const cv::Mat tile = image(layout.tile(k));
       const auto seen = test_support::statistics_of(tile);

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "config/scenario_loader.hpp"
+#include "vision/capture.hpp"
 #include "vision/imaging_model.hpp"
 #include "vision/renderer.hpp"
 #include "vision/sensor_calibration.hpp"
@@ -56,10 +57,7 @@ void add_trials(const config::scenario& scenario, const sensor_model& model,
     if (tick < first || (tick - first) % stride != 0) continue;
     const auto& frame = *crowd.current();
     for (std::size_t c = 0; c < views.size(); ++c) {
-      cv::Mat image = render.render(views[c], frame, tick * tick_s);
-      image = imaging[c].interlaced()
-                  ? imaging[c].apply(image, render.render(views[c], frame, (tick + 0.5) * tick_s))
-                  : imaging[c].apply(image);
+      cv::Mat image = capture(render, views[c], frame, tick * tick_s, tick_s / 2.0, imaging[c]);
       auto p = pixel_trials(image, frame, *station, views[c], 0.4, kernels);
       pixels.insert(pixels.end(), p.begin(), p.end());
       auto e = emulated_trials(sensors[c], frame, *station, views[c]);

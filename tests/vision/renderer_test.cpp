@@ -118,14 +118,24 @@ TEST(renderer, interlaced_frames_of_a_moving_figure_differ_between_even_and_odd_
   EXPECT_GT(combing(woven), 1.5 * std::max(combing(f1), combing(f2)));
 }
 
+// Penn Station with 100 pedestrians walking, 10 s in (seed 3).
+const std::pair<std::shared_ptr<const world::station>, std::shared_ptr<const world::snapshot>>&
+walking_crowd() {
+  static const auto scene = [] {
+    auto station = world::station::load(world::builtin_layout_path());
+    world::crowd_settings settings;
+    settings.population = 100;
+    settings.run_seed = 3;
+    world::crowd crowd(station, settings);
+    for (int k = 0; k < 150; ++k) crowd.step();
+    return std::pair{std::shared_ptr<const world::station>(station), crowd.current()};
+  }();
+  return scene;
+}
+
 TEST(renderer, penn_station_frame_shows_shirt_colours_where_the_camera_model_puts_them) {
-  auto station = world::station::load(world::builtin_layout_path());
-  world::crowd_settings settings;
-  settings.population = 100;
-  settings.run_seed = 3;
-  world::crowd crowd(station, settings);
-  for (int k = 0; k < 150; ++k) crowd.step();
-  const auto& frame = *crowd.current();
+  const auto& [station, snapshot] = walking_crowd();
+  const auto& frame = *snapshot;
   renderer r(station);
   // Camera 2 of scenarios/penn_station.yaml: north wall of the waiting room, looking south.
   camera_view view{{{103.0, 87.0, 8.0}}, {-90.0, -20.0, 60.0}, 640, 480};
@@ -159,6 +169,59 @@ TEST(renderer, penn_station_frame_shows_shirt_colours_where_the_camera_model_put
   ASSERT_GE(checked, 5) << "too few pedestrians near camera 2 to test";
   // Some may be hidden behind others or a bench.
   EXPECT_GE(matched, checked * 8 / 10) << matched << " of " << checked;
+}
+
+// The fraction of pixels that differ in any channel, and the mean absolute difference per
+// channel, between two frames of the same size.
+std::pair<double, double> difference(const cv::Mat& a, const cv::Mat& b) {
+  cv::Mat diff;
+  cv::absdiff(a, b, diff);
+  cv::Mat any;
+  cv::transform(diff, any, cv::Matx13f(1.0f, 1.0f, 1.0f));
+  const double differing = cv::countNonZero(any) / static_cast<double>(a.total());
+  const cv::Scalar mean = cv::mean(diff);
+  return {differing, (mean[0] + mean[1] + mean[2]) / 3.0};
+}
+
+// What renderer::render_interlaced promises: the rows of two full renders woven together, up
+// to rounding at the edges of shapes, in the station with a crowd walking (the gait moves
+// between the fields), for an even and an odd number of rows.
+TEST(renderer, interlaced_frame_in_one_pass_is_two_full_renders_woven) {
+  const auto& [station, snapshot] = walking_crowd();
+  const auto& frame = *snapshot;
+  renderer r(station);
+  const double t = frame.time().count();
+  for (const int rows : {240, 241}) {
+    // Camera 2 of scenarios/penn_station.yaml, and camera 7 (the arcade), zoomed in.
+    for (const auto& view : {camera_view{{{103.0, 87.0, 8.0}}, {-90.0, -20.0, 60.0}, 320, rows},
+                             camera_view{{{197.0, 62.0, 5.0}}, {-165.0, -15.0, 20.0}, 320, rows}}) {
+      const cv::Mat one_pass = r.render_interlaced(view, frame, t, t + 1.0 / 30.0);
+      const cv::Mat woven =
+          weave_fields(r.render(view, frame, t), r.render(view, frame, t + 1.0 / 30.0));
+      ASSERT_EQ(one_pass.size(), woven.size());
+      const auto [differing, mean_abs] = difference(one_pass, woven);
+      std::cout << rows << " rows, pan " << view.pose.pan_deg << ": " << 100.0 * differing
+                << " % of pixels differ, by " << mean_abs << " grey levels on average\n";
+      // Measured: at most 0.11 % of pixels, 0.11 grey levels (llvmpipe, 2026-12-05).
+      EXPECT_LT(differing, 0.005);
+      EXPECT_LT(mean_abs, 0.25);
+      // Not a copy of one field: the odd rows are the second field's.
+      EXPECT_GT(cv::norm(one_pass, r.render(view, frame, t), cv::NORM_L1), 0.0);
+    }
+  }
+}
+
+TEST(renderer, interlaced_frame_of_a_moving_figure_in_one_pass_is_combed_as_the_woven_one) {
+  renderer r(nullptr);
+  camera_view view{{{0.0, 0.0, 1.5}}, {90.0, -5.0, 40.0}, 320, 240};
+  auto first = walker(-1.0);
+  auto second = walker(-1.0 + 4.0 / 30.0);
+  const cv::Mat one_pass =
+      r.render_interlaced(view, std::span{&first, 1}, 0.0, std::span{&second, 1}, 1.0 / 30.0);
+  const cv::Mat woven = weave_fields(r.render(view, std::span{&first, 1}, 0.0),
+                                     r.render(view, std::span{&second, 1}, 1.0 / 30.0));
+  EXPECT_NEAR(combing(one_pass), combing(woven), 0.05 * combing(woven));
+  EXPECT_LT(difference(one_pass, woven).first, 0.01);
 }
 
 }  // namespace
