@@ -11,16 +11,10 @@
 #include "actors/recorder.hpp"
 #include "actors/system_config.hpp"
 #include "tests/actors/chatter.hpp"
+#include "tests/actors/file_text.hpp"
 
 namespace argus::actors::testing {
 namespace {
-
-std::string read_file(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 struct run_spec {
   unsigned threads = 1;
@@ -70,7 +64,7 @@ std::string run_chatters(const run_spec& spec, const std::string& tag) {
     EXPECT_TRUE(ok);
     peers->clear();  // break the cycle actor -> directory -> actor
   }
-  auto events = read_file(dir / "events.jsonl");
+  auto events = file_text(dir / "events.jsonl");
   std::filesystem::remove_all(dir);
   return events;
 }

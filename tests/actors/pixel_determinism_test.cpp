@@ -7,21 +7,13 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "actors/run_scenario.hpp"
 #include "config/scenario_loader.hpp"
+#include "tests/actors/file_text.hpp"
 
 namespace argus::actors {
 namespace {
-
-std::string read_file(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 // Runs 20 s of penn_station.yaml (seed 3) on `threads` scheduler threads; returns its folder.
 std::filesystem::path run_on(unsigned threads) {
@@ -42,14 +34,15 @@ std::filesystem::path run_on(unsigned threads) {
 TEST(pixel_determinism, a_pixel_run_is_the_same_on_one_thread_and_on_three) {
   const auto one = run_on(1);
   const auto three = run_on(3);
-  const auto events = read_file(one / "events.jsonl");
+  const auto events = testing::file_text(one / "events.jsonl");
   // The task was taken and tracked on rendered frames: there is something to compare.
   ASSERT_NE(events.find("\"kind\":\"task_created\""), std::string::npos);
-  const auto tracks = read_file(one / "tracks.csv");
+  const auto tracks = testing::file_text(one / "tracks.csv");
   ASSERT_GT(std::count(tracks.begin(), tracks.end(), '\n'), 10);
-  EXPECT_EQ(events, read_file(three / "events.jsonl"));
-  EXPECT_EQ(tracks, read_file(three / "tracks.csv"));
-  EXPECT_EQ(read_file(one / "trajectories.csv"), read_file(three / "trajectories.csv"));
+  EXPECT_EQ(events, testing::file_text(three / "events.jsonl"));
+  EXPECT_EQ(tracks, testing::file_text(three / "tracks.csv"));
+  EXPECT_EQ(testing::file_text(one / "trajectories.csv"),
+            testing::file_text(three / "trajectories.csv"));
 }
 
 }  // namespace
