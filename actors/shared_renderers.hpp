@@ -43,9 +43,6 @@ class shared_renderers {
   /// renderer throws; the renderer is returned either way.
   render_result render(render_request request);
 
-  /// How many renderers there are.
-  std::size_t size() const noexcept { return all_.size(); }
-
  private:
   std::vector<std::unique_ptr<vision::renderer>> all_;
   std::mutex mutex_;

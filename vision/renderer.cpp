@@ -384,9 +384,12 @@ cv::Mat renderer::draw(const camera_view& view, bool with_station, std::span<con
         glVertexAttrib4f(2, 1.0f, 1.0f, 1.0f, 0.0f);  // per-vertex colour: white, no pattern
         glBindBuffer(GL_ARRAY_BUFFER, g.instance_vbo);
         const auto bytes = static_cast<GLsizeiptr>(boxes.size() * sizeof(box_instance));
-        if (bytes > g.instance_capacity) g.instance_capacity = bytes * 2;
-        // New storage for every pass: the previous pass may still be reading the old one.
-        glBufferData(GL_ARRAY_BUFFER, g.instance_capacity, nullptr, GL_STREAM_DRAW);
+        // New storage when it must grow, and for a second field: the first may still be
+        // reading the old one (a frame's passes are drawn before its one read-back).
+        const bool grows = bytes > g.instance_capacity;
+        if (grows) g.instance_capacity = bytes * 2;
+        if (grows || &p != &passes.front())
+          glBufferData(GL_ARRAY_BUFFER, g.instance_capacity, nullptr, GL_STREAM_DRAW);
         glBufferSubData(GL_ARRAY_BUFFER, 0, bytes, boxes.data());
         glDrawArraysInstanced(GL_TRIANGLES, 0, 36, static_cast<GLsizei>(boxes.size()));
       }

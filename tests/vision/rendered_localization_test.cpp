@@ -7,6 +7,7 @@
 
 #include <opencv2/imgcodecs.hpp>
 
+#include "tests/support/walking_crowd.hpp"
 #include "vision/backprojection.hpp"
 #include "vision/color_histogram.hpp"
 #include "vision/emulated_sensor.hpp"
@@ -43,13 +44,9 @@ bool contains_centre(const cv::Rect2d& truth, const localized_region& r) {
 }
 
 TEST(rendered_localization, finds_the_target_at_every_zoom_with_the_paper_scales) {
-  auto station = world::station::load(world::builtin_layout_path());
-  world::crowd_settings settings;
-  settings.population = 100;
-  settings.run_seed = 3;
-  world::crowd crowd(station, settings);
-  for (int k = 0; k < 150; ++k) crowd.step();
-  const auto& frame = *crowd.current();
+  const auto& scene = ::argus::test_support::walking_crowd();
+  const auto& frame = *scene.frame;
+  const auto& station = scene.station;
   renderer render(station);
   // Camera 2 of scenarios/penn_station.yaml: north wall of the waiting room, looking south.
   const camera_view wide{{{103.0, 87.0, 8.0}}, {-90.0, -20.0, 60.0}, width, height};

@@ -8,6 +8,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "tests/support/walking_crowd.hpp"
 #include "vision/imaging_model.hpp"
 #include "world/crowd.hpp"
 #include "world/layout_loader.hpp"
@@ -118,25 +119,10 @@ TEST(renderer, interlaced_frames_of_a_moving_figure_differ_between_even_and_odd_
   EXPECT_GT(combing(woven), 1.5 * std::max(combing(f1), combing(f2)));
 }
 
-// Penn Station with 100 pedestrians walking, 10 s in (seed 3).
-const std::pair<std::shared_ptr<const world::station>, std::shared_ptr<const world::snapshot>>&
-walking_crowd() {
-  static const auto scene = [] {
-    auto station = world::station::load(world::builtin_layout_path());
-    world::crowd_settings settings;
-    settings.population = 100;
-    settings.run_seed = 3;
-    world::crowd crowd(station, settings);
-    for (int k = 0; k < 150; ++k) crowd.step();
-    return std::pair{std::shared_ptr<const world::station>(station), crowd.current()};
-  }();
-  return scene;
-}
-
 TEST(renderer, penn_station_frame_shows_shirt_colours_where_the_camera_model_puts_them) {
-  const auto& [station, snapshot] = walking_crowd();
-  const auto& frame = *snapshot;
-  renderer r(station);
+  const auto& scene = ::argus::test_support::walking_crowd();
+  const auto& frame = *scene.frame;
+  renderer r(scene.station);
   // Camera 2 of scenarios/penn_station.yaml: north wall of the waiting room, looking south.
   camera_view view{{{103.0, 87.0, 8.0}}, {-90.0, -20.0, 60.0}, 640, 480};
   const cv::Mat image = r.render(view, frame, frame.time().count());
@@ -187,9 +173,9 @@ std::pair<double, double> difference(const cv::Mat& a, const cv::Mat& b) {
 // to rounding at the edges of shapes, in the station with a crowd walking (the gait moves
 // between the fields), for an even and an odd number of rows.
 TEST(renderer, interlaced_frame_in_one_pass_is_two_full_renders_woven) {
-  const auto& [station, snapshot] = walking_crowd();
-  const auto& frame = *snapshot;
-  renderer r(station);
+  const auto& scene = ::argus::test_support::walking_crowd();
+  const auto& frame = *scene.frame;
+  renderer r(scene.station);
   const double t = frame.time().count();
   for (const int rows : {240, 241}) {
     // Camera 2 of scenarios/penn_station.yaml, and camera 7 (the arcade), zoomed in.
