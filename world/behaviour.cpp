@@ -9,6 +9,7 @@
 #include "opencv2/imgproc.hpp"
 #include "world/snapshot.hpp"
 #include "world/station.hpp"
+#include "world/turned_lanes.hpp"
 
 namespace argus::world {
 
@@ -734,50 +735,19 @@ class stepper {
           turn_sin[k] * desired_direction.x() + turn_cos[k] * desired_direction.y()};
       free_path_m[k] = settings_.look_ahead_m;
     }
-    // Who can change this step, sifted before the visit without a branch: someone near
-    // (the repulsion, the constraints, the arch test), or someone farther in the lane ahead
-    // within the look-ahead (the way's free path) or coming the other way (the side step).
-    // Everyone else would only lose a comparison below, so leaving them out changes no result.
-    // The tests repeat the visit's own arithmetic; the margins only widen them. The distance
-    // floor leaves out the walker itself. The turned headings' free paths, needed only when
-    // the way's is short, take a second look below.
+    // Who can change this step (neighbour_sieve); the turned headings' free paths, needed
+    // only when the way's is short, take a second look below.
     constexpr double reach_squared = snapshot::neighbour_cell_m * snapshot::neighbour_cell_m;
-    constexpr double sqrt_two = 1.4142135623730951 + 1e-9;
     const double look_m = settings_.look_ahead_m + 1e-6;
     const double lane_margin_m = settings_.sidestep_margin_m + 1e-9;
     const bool turning = headings > 1;
-    // Who may stand in a turned heading's way (kept during the visit, weighed after it only
-    // when the way's own free path is short). A cone 2.9 m long holds about 40 people at
-    // 6 /m^2; past the capacity the last visited are left out, the same ones every run.
-    // A plain struct, not std::pair: the array is left unfilled instead of zeroed every step.
-    struct lane_entry {
-      vec2 offset;
-      double contact;
-    };
-    std::array<lane_entry, 96> in_turned_lanes;
-    std::size_t in_turned_count = 0;
-    const auto matters = [&](const neighbour& other) {
-      const vec2 offset = other.position - s_.position;
-      const double distance_squared = offset.squaredNorm();
-      const double contact = radius + other.radius_m();
-      const double near_m = contact + near_gap_m;
-      const double along = offset.dot(desired_direction);
-      const double across =
-          std::abs(offset.x() * desired_direction.y() - offset.y() * desired_direction.x());
-      const bool in_reach = !(distance_squared > reach_squared) & !(distance_squared < 1e-18);
-      const bool near = distance_squared < near_m * near_m;
-      const bool in_lane = (along > 0.0) & (across < contact + lane_margin_m);
-      const bool slows = along - contact < look_m;
-      const bool oncoming = other.velocity.dot(desired_direction) < -0.1 + 1e-9;
-      // In a turned heading's lane (within 45 degrees of the way, widened by contact across
-      // the outermost heading) and near enough to shorten its free path below the look-ahead
-      // (a free path is at least the distance less two contacts).
-      const double view_m = look_m + 2.0 * contact;
-      const bool in_cone =
-          turning & (along > across - sqrt_two * contact) & (distance_squared < view_m * view_m);
-      return in_reach & (near | in_cone | (in_lane & (slows | oncoming)));
-    };
-    previous_.for_each_near_where(s_.position, matters, [&](const neighbour& other) {
+    // Who may stand in a turned heading's way, kept during the visit and weighed after it only
+    // when the way's own free path is short. A cone 2.9 m long holds about 40 people at
+    // 6 /m^2.
+    turned_lanes in_turned_lanes(settings_.turn_min_free_m);
+    const neighbour_sieve matters{s_.position, desired_direction, radius, near_gap_m, reach_squared,
+                                  look_m,      lane_margin_m,     turning};
+    previous_.for_each_sifted(s_.position, matters, [&](const neighbour& other) {
       const vec2 offset = other.position - s_.position;
       const double distance_squared = offset.squaredNorm();
       const double contact = radius + other.radius_m();
@@ -811,9 +781,7 @@ class stepper {
       if (!same_line && !behind_me) {
         // Headway: the free path along the way before touching someone in it.
         free_path_m[0] = free_path(offset, contact, heading_directions[0], free_path_m[0]);
-        if (turning && in_turned_count < in_turned_lanes.size()) {
-          in_turned_lanes[in_turned_count++] = {offset, contact};
-        }
+        if (turning) in_turned_lanes.keep(offset, contact, distance_squared);
         const double along = offset.dot(desired_direction);
         if (along > 0.0) {
           const double across =
@@ -863,11 +831,8 @@ class stepper {
           free_path_m[k] = 0.0;
           continue;
         }
-        for (std::size_t i = 0; i < in_turned_count; ++i) {
-          const auto& [offset, contact] = in_turned_lanes[i];
-          free_path_m[k] = free_path(offset, contact, heading_directions[k], free_path_m[k]);
-          if (free_path_m[k] < settings_.turn_min_free_m) break;
-        }
+        free_path_m[k] =
+            in_turned_lanes.free_path(heading_directions[k], lane_fraction, free_path_m[k]);
       }
     }
     const std::size_t chosen =

@@ -10,6 +10,7 @@
 
 #include "world/event.hpp"
 #include "world/neighbour.hpp"
+#include "world/neighbour_sieve.hpp"
 #include "world/pedestrian.hpp"
 
 namespace argus::world {
@@ -54,26 +55,27 @@ class snapshot {
     });
   }
 
-  /// Calls `visit(const neighbour&)` for every pedestrian of for_each_near's cells for whom
-  /// `keep(const neighbour&)` is true, in the same order. Most of the 3 x 3 cells' people
-  /// matter to no one's step, and which ones is a coin toss to the branch predictor: each run
-  /// of cells is first sifted into a list of indices without a branch (so `keep` should be
-  /// branch-free too: bitwise `&` and `|` on bools), then visited.
-  template <class Keep, class Visitor>
-  void for_each_near_where(const vec2& p, Keep&& keep, Visitor&& visit) const {
-    constexpr std::size_t chunk = 128;
+  /// Calls `visit(const neighbour&)` for those of for_each_near's cells whom `sieve` keeps,
+  /// in the same order: `sieve.sift(columns(), begin, end, picked)` writes the kept indices of
+  /// [begin, end) to `picked` and returns how many (neighbour_sieve). Sifting the columns
+  /// first, the visit reads the records of only those kept (in a packed station, a third of
+  /// the 3 x 3 cells' people).
+  template <class Sieve, class Visitor>
+  void for_each_sifted(const vec2& p, const Sieve& sieve, Visitor&& visit) const {
+    constexpr std::uint32_t chunk = 128;
     std::array<std::uint32_t, chunk> picked;
+    const neighbour_columns c = columns();
     for_each_row_near(p, [&](std::uint32_t k, std::uint32_t end) {
-      while (k < end) {
-        const std::uint32_t stop = std::min<std::uint32_t>(end, k + chunk);
-        std::size_t count = 0;
-        for (; k < stop; ++k) {
-          picked[count] = k;
-          count += static_cast<std::size_t>(keep(neighbours_[k]));
-        }
+      for (; k < end; k += chunk) {
+        const std::size_t count = sieve.sift(c, k, std::min(end, k + chunk), picked.data());
         for (std::size_t i = 0; i < count; ++i) visit(neighbours_[picked[i]]);
       }
     });
+  }
+
+  /// The neighbour index's people as columns, in the index's order.
+  neighbour_columns columns() const noexcept {
+    return {x_.data(), y_.data(), vx_.data(), vy_.data(), radius_.data()};
   }
 
   /// Number of pedestrians in counter `counter`'s line (walking to it, waiting or served).
@@ -120,6 +122,8 @@ class snapshot {
   // order; a row's cells are contiguous, so one range spans three cells.
   std::vector<std::uint32_t> cell_start_;
   std::vector<neighbour> neighbours_;
+  // neighbours_' positions, velocities and radii as columns (for_each_sifted).
+  std::vector<double> x_, y_, vx_, vy_, radius_;
   std::vector<std::vector<std::pair<std::uint64_t, int>>> queues_;
   std::vector<int> seat_holder_;
 };

@@ -44,24 +44,39 @@ TEST(snapshot, neighbours_cover_two_metres) {
 
 // The sifted visit is the plain one with the rejected left out, in the same order: the
 // crowd's step sums forces in visiting order, so any reordering would change trajectories.
-// 400 people in 6 x 6 m put more than one sifting chunk (128) into a row of cells.
+// 400 people in 6 x 6 m put more than one sifting chunk (128) into a row of cells, and the
+// sieve keeps a few of them.
 TEST(snapshot, sifted_neighbours_keep_the_order) {
   std::vector<pedestrian_state> crowd;
   rng random(12345);
   for (int id = 1; id <= 400; ++id) {
-    const double x = random.uniform(97.0, 103.0);
-    crowd.push_back(at(id, x, random.uniform(47.0, 53.0)));
+    auto p = at(id, random.uniform(97.0, 103.0), random.uniform(47.0, 53.0));
+    p.velocity = {random.uniform(-1.5, 1.5), random.uniform(-1.5, 1.5)};
+    crowd.push_back(p);
   }
   snapshot s(penn(), 1, std::chrono::duration<double>{0.0}, crowd);
-  const vec2 here{100.0, 50.0};
-  auto keep = [&](const neighbour& p) { return (p.position - here).x() > 0.3; };
+  neighbour_sieve sieve;
+  sieve.position = {100.0, 50.0};
+  sieve.direction = {0.6, 0.8};
+  sieve.radius = 0.23;
+  sieve.near_gap_m = 0.45;
+  sieve.reach_squared = snapshot::neighbour_cell_m * snapshot::neighbour_cell_m;
+  sieve.look_m = 2.0;
+  sieve.lane_margin_m = 0.3;
+  sieve.turning = true;
   std::vector<int> plain;
-  s.for_each_near(here, [&](const neighbour& p) {
-    if (keep(p)) plain.push_back(p.id);
+  std::size_t around = 0;
+  s.for_each_near(sieve.position, [&](const neighbour& p) {
+    ++around;
+    if (sieve.matters(p.position.x(), p.position.y(), p.velocity.x(), p.velocity.y(), p.radius)) {
+      plain.push_back(p.id);
+    }
   });
   std::vector<int> sifted;
-  s.for_each_near_where(here, keep, [&](const neighbour& p) { sifted.push_back(p.id); });
-  ASSERT_GT(plain.size(), 128u);
+  s.for_each_sifted(sieve.position, sieve, [&](const neighbour& p) { sifted.push_back(p.id); });
+  ASSERT_GT(around, 2u * 128u);
+  ASSERT_GT(plain.size(), 40u);
+  ASSERT_LT(plain.size(), around / 2);
   EXPECT_EQ(sifted, plain);
 }
 
