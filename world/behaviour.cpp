@@ -715,17 +715,6 @@ class stepper {
         settings_.headway_lane_slow +
         (settings_.headway_lane - settings_.headway_lane_slow) *
             std::min(1.0, s_.velocity.norm() / settings_.headway_lane_speed_mps);
-    // The free path along unit `direction` to someone at `offset` with body contact `contact`
-    // (infinite unless their centre lies ahead within the lane), or `shortest` when shorter.
-    const auto free_path = [&](const vec2& offset, double contact, const vec2& direction,
-                               double shortest) {
-      const double ahead = offset.dot(direction);
-      const double aside = std::abs(offset.x() * direction.y() - offset.y() * direction.x());
-      const double lane = lane_fraction * contact;
-      if (!(ahead > 0.0) || !(aside < lane)) return shortest;
-      return std::min(shortest,
-                      std::max(ahead - std::sqrt(contact * contact - aside * aside), 0.0));
-    };
     const std::size_t headings = wants_to_walk ? turns : 1;
     std::array<vec2, turns> heading_directions;
     std::array<double, turns> free_path_m;
@@ -780,7 +769,8 @@ class stepper {
            (other.distance_to_goal_m == s_.distance_to_goal_m && other.id > s_.id));
       if (!same_line && !behind_me) {
         // Headway: the free path along the way before touching someone in it.
-        free_path_m[0] = free_path(offset, contact, heading_directions[0], free_path_m[0]);
+        free_path_m[0] =
+            free_path_to(offset, contact, heading_directions[0], lane_fraction, free_path_m[0]);
         if (turning) in_turned_lanes.keep(offset, contact, distance_squared);
         const double along = offset.dot(desired_direction);
         if (along > 0.0) {

@@ -75,9 +75,9 @@ struct neighbour_sieve {
   /// how many.
   std::size_t sift(const neighbour_columns& c, std::uint32_t begin, std::uint32_t end,
                    std::uint32_t* picked) const {
-    std::size_t count = 0;
 #if defined(__SSE2__)
     const lanes l(*this);
+    std::size_t count = 0;
     std::uint32_t k = begin;
     for (; k + 2 <= end; k += 2) {
       const int kept =
@@ -88,14 +88,10 @@ struct neighbour_sieve {
       picked[count] = k + 1;
       count += static_cast<std::size_t>(kept >> 1);
     }
-    if (k < end) {
-      picked[count] = k;
-      count += static_cast<std::size_t>(matters(c.x[k], c.y[k], c.vx[k], c.vy[k], c.radius[k]));
-    }
+    return count + sift_one_by_one(c, k, end, picked + count);
 #else
-    count = sift_one_by_one(c, begin, end, picked);
+    return sift_one_by_one(c, begin, end, picked);
 #endif
-    return count;
   }
 
   /// sift weighing one person at a time (the reference sift must agree with).

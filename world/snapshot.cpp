@@ -37,16 +37,15 @@ snapshot::snapshot(const station& where, std::uint64_t tick, std::chrono::durati
   }
   for (std::size_t c = 1; c <= cells; ++c) cell_start_[c] += cell_start_[c - 1];
   neighbours_.resize(pedestrians_.size());
+  for (auto* column : {&x_, &y_, &vx_, &vy_, &radius_}) column->resize(pedestrians_.size());
   for (std::size_t i = pedestrians_.size(); i-- > 0;) {
-    neighbours_[--cell_start_[cell_of[i]]] = neighbour(pedestrians_[i]);
-  }
-  for (auto* column : {&x_, &y_, &vx_, &vy_, &radius_}) column->resize(neighbours_.size());
-  for (std::size_t k = 0; k < neighbours_.size(); ++k) {
-    x_[k] = neighbours_[k].position.x();
-    y_[k] = neighbours_[k].position.y();
-    vx_[k] = neighbours_[k].velocity.x();
-    vy_[k] = neighbours_[k].velocity.y();
-    radius_[k] = neighbours_[k].radius;
+    const auto at = --cell_start_[cell_of[i]];
+    const auto& placed = neighbours_[at] = neighbour(pedestrians_[i]);
+    x_[at] = placed.position.x();
+    y_[at] = placed.position.y();
+    vx_[at] = placed.velocity.x();
+    vy_[at] = placed.velocity.y();
+    radius_[at] = placed.radius;
   }
   queues_.assign(where.counter_count(), {});
   seat_holder_.assign(where.seats().size(), -1);

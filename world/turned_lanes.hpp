@@ -14,6 +14,17 @@
 
 namespace argus::world {
 
+/// The free path along unit `direction` before touching someone at `offset` with body contact
+/// `contact`, or `shortest` when that is shorter: infinite unless their centre lies ahead and
+/// within `lane_fraction` of contact across the path (step_pedestrian's headway).
+inline double free_path_to(const vec2& offset, double contact, const vec2& direction,
+                           double lane_fraction, double shortest) {
+  const double ahead = offset.x() * direction.x() + offset.y() * direction.y();
+  const double aside = std::abs(offset.x() * direction.y() - offset.y() * direction.x());
+  if (!(ahead > 0.0) || !(aside < lane_fraction * contact)) return shortest;
+  return std::min(shortest, std::max(ahead - std::sqrt(contact * contact - aside * aside), 0.0));
+}
+
 /// The people who may stand in a walker's turned headings (step_pedestrian's heading choice),
 /// kept during the neighbour visit and weighed after it, heading by heading.
 ///
@@ -49,9 +60,7 @@ class turned_lanes {
   /// the heading is out, and the rest are not weighed.
   double free_path(const vec2& direction, double lane_fraction, double path) const {
 #if defined(__SSE2__)
-    path = least_in_pairs(0, blockers_, direction, lane_fraction, path, true);
-    if (path < block_m_) return path;
-    return least_in_pairs(capacity - others_, capacity, direction, lane_fraction, path, false);
+    return blockers_then_others(&turned_lanes::least_in_pairs, direction, lane_fraction, path);
 #else
     return free_path_one_by_one(direction, lane_fraction, path);
 #endif
@@ -59,20 +68,24 @@ class turned_lanes {
 
   /// free_path weighing one person at a time (the reference free_path must agree with).
   double free_path_one_by_one(const vec2& direction, double lane_fraction, double path) const {
-    path = least_one_by_one(0, blockers_, direction, lane_fraction, path, true);
-    if (path < block_m_) return path;
-    return least_one_by_one(capacity - others_, capacity, direction, lane_fraction, path, false);
+    return blockers_then_others(&turned_lanes::least_one_by_one, direction, lane_fraction, path);
   }
 
  private:
+  using least_of = double (turned_lanes::*)(std::size_t, std::size_t, const vec2&, double, double,
+                                            bool) const;
+
+  double blockers_then_others(least_of least, const vec2& direction, double lane_fraction,
+                              double path) const {
+    path = (this->*least)(0, blockers_, direction, lane_fraction, path, true);
+    if (path < block_m_) return path;
+    return (this->*least)(capacity - others_, capacity, direction, lane_fraction, path, false);
+  }
+
   double least_one_by_one(std::size_t begin, std::size_t end, const vec2& direction,
                           double lane_fraction, double path, bool stop_when_blocked) const {
     for (std::size_t j = begin; j < end; ++j) {
-      const double ahead = x_[j] * direction.x() + y_[j] * direction.y();
-      const double aside = std::abs(x_[j] * direction.y() - y_[j] * direction.x());
-      const double contact = contact_[j];
-      if (!(ahead > 0.0) || !(aside < lane_fraction * contact)) continue;
-      path = std::min(path, std::max(ahead - std::sqrt(contact * contact - aside * aside), 0.0));
+      path = free_path_to({x_[j], y_[j]}, contact_[j], direction, lane_fraction, path);
       if (stop_when_blocked && path < block_m_) return path;
     }
     return path;
@@ -80,7 +93,7 @@ class turned_lanes {
 
 #if defined(__SSE2__)
   // Two people a lane: SSE2 is in every x86-64, and the compiler, left to itself, branched on
-  // every test. The arithmetic is least_one_by_one's, term for term; a root is taken for
+  // every test. The arithmetic is free_path_to's, term for term; a root is taken for
   // everyone (of zero outside the lane) and the lane test picks what counts.
   double least_in_pairs(std::size_t begin, std::size_t end, const vec2& direction,
                         double lane_fraction, double path, bool stop_when_blocked) const {
