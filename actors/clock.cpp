@@ -151,6 +151,7 @@ class clock_actor : public caf::event_based_actor {
   }
 
   void begin_tick() {
+    if (finished_) return;  // a lost worker ended the run between ticks
     phase_ = 0;
     run_phases();
   }
@@ -204,6 +205,7 @@ class clock_actor : public caf::event_based_actor {
   }
 
   void on_ack(tick_ack& ack) {
+    if (finished_) return;  // a lost worker ended the run in the middle of a tick
     auto it = participants_.find(ack.participant);
     if (ack.tick != tick_ || it == participants_.end() || !it->second.awaited) {
       spdlog::warn("clock: stray ack from participant {} for tick {} (now tick {})",
@@ -254,6 +256,10 @@ class clock_actor : public caf::event_based_actor {
     if (entry_it == participants_.end()) return;
     const auto& info = entry_it->second.info;
     auto name = info.name;
+    if (!info.host.empty() && msg.reason == caf::exit_reason::remote_link_unreachable) {
+      lose_worker(info.host, name);
+      return;
+    }
     if (info.mode == wake_mode::never) {
       // A relay that died owes hand-overs that will never come: the receivers would wait for
       // them forever, so the run ends here, saying why, rather than stall.
@@ -281,6 +287,25 @@ class clock_actor : public caf::event_based_actor {
     ev.fields_json = events::fields_json(down);
     batch_.push_back(std::move(ev));
     drop(id, /*expected=*/false);
+  }
+
+  // A distributed run's worker is gone with everything it hosted (docs/distributed.md): the
+  // tick in progress cannot complete, so the run ends with the last whole one, its outputs
+  // complete up to it, and fails naming the worker.
+  void lose_worker(const std::string& host, const std::string& participant) {
+    if (finished_) return;
+    stop_reason_ = fmt::format(
+        "worker {} was lost during tick {} ({} unreachable); the outputs are complete up to "
+        "tick {}",
+        host, tick_, participant, tick_ - 1);
+    spdlog::error("clock: {}", stop_reason_);
+    batch_.clear();
+    std::vector<std::uint64_t> gone;
+    for (const auto& [id, e] : participants_)
+      if (e.info.host == host) gone.push_back(id);
+    finished_ = true;  // no phase runs on when the lost participants leave the barrier
+    for (auto id : gone) drop(id, /*expected=*/true);
+    finish();
   }
 
   void drop(std::uint64_t id, bool expected) {

@@ -1,6 +1,7 @@
 #include "actors/fault_injector.hpp"
 
 #include <cmath>
+#include <map>
 #include <optional>
 #include <random>
 #include <set>
@@ -16,6 +17,7 @@
 #include "config/enum_names.hpp"
 #include "config/ticks.hpp"
 #include "fmt/format.h"
+#include "spdlog/spdlog.h"
 
 namespace argus::actors {
 namespace {
@@ -47,6 +49,10 @@ struct injector_state {
   std::int64_t tick = 0;
   std::optional<tick_ack> held_ack;
   std::shared_ptr<live::session> live;
+  // A distributed run's cameras that recover on their worker, whose handles are still to come:
+  // their attachments wait in `commands`, and no command goes out before every handle is in.
+  // True: crashed again in the same turn, to be carried out once it exists.
+  std::map<int, bool> spawning;
 };
 
 using injector = caf::stateful_actor<injector_state>;
@@ -70,7 +76,7 @@ void tell_link(injector* self, int a, int b, const link_command& cmd) {
 // Acknowledges the turn once no camera of it is still dying and every link has answered.
 void ack_when_done(injector* self) {
   auto& st = self->state;
-  if (!st.dying.empty() || st.answers_pending > 0 || !st.held_ack) return;
+  if (!st.dying.empty() || !st.spawning.empty() || st.answers_pending > 0 || !st.held_ack) return;
   self->send(st.clock, std::move(*st.held_ack));
   st.held_ack.reset();
 }
@@ -78,7 +84,7 @@ void ack_when_done(injector* self) {
 // Sends the turn's link commands in the order they were made, once the crashed are gone.
 void send_commands(injector* self) {
   auto& st = self->state;
-  if (!st.dying.empty()) return;
+  if (!st.dying.empty() || !st.spawning.empty()) return;
   for (auto& [link, cmd] : st.commands) {
     mail_stamp stamp{st.tick, static_cast<std::uint8_t>(phase::faults), st.info.id, st.mail_seq++};
     ++st.answers_pending;
@@ -92,17 +98,28 @@ void send_commands(injector* self) {
   st.commands.clear();
 }
 
-bool crash(injector* self, int camera) {
+// Retires the camera at the clock and ends its actor.
+void kill_camera(injector* self, int camera, caf::actor& handle) {
   auto& st = self->state;
-  auto it = st.net.cameras.find(camera);
-  if (it == st.net.cameras.end() || !it->second) return false;  // already down
   // The retire reaches the clock before this actor's ack: the camera leaves the barrier at a
   // deterministic point, and its death is not reported as unexpected.
   self->send(st.clock, retire_atom_v, participant_ids::camera(camera));
-  self->monitor(it->second);
-  st.dying.insert(it->second.address());
-  self->send_exit(it->second, crash_reason());
-  it->second = caf::actor{};
+  self->monitor(handle);
+  st.dying.insert(handle.address());
+  self->send_exit(handle, crash_reason());
+  handle = caf::actor{};
+}
+
+bool crash(injector* self, int camera) {
+  auto& st = self->state;
+  auto it = st.net.cameras.find(camera);
+  if (it == st.net.cameras.end()) return false;
+  if (auto again = st.spawning.find(camera); again != st.spawning.end()) {
+    again->second = true;  // recovered earlier in this turn: killed as soon as it exists
+  } else {
+    if (!it->second) return false;  // already down
+    kill_camera(self, camera, it->second);
+  }
   link_command cmd;
   cmd.op = link_op::node_down;
   cmd.node = camera;
@@ -110,17 +127,60 @@ bool crash(injector* self, int camera) {
   return true;
 }
 
+// A recovered camera's worker answered with its handle: it joins the clock, its attachments
+// get it, and the turn's commands may go.
+void spawned_again(injector* self, int camera, caf::actor handle) {
+  auto& st = self->state;
+  const bool crash_again = st.spawning[camera];
+  st.spawning.erase(camera);
+  st.net.cameras[camera] = handle;
+  for (const auto& cam : st.scenario.cameras) {
+    if (cam.id != camera || !handle) continue;
+    auto info = camera_participant(cam);
+    info.host = st.net.host_names[camera];
+    self->send(st.clock, join_atom_v, handle, info);
+  }
+  for (auto& [link, cmd] : st.commands)
+    if (cmd.op == link_op::attach && cmd.node == camera && !cmd.handle) cmd.handle = handle;
+  if (crash_again && handle) kill_camera(self, camera, st.net.cameras[camera]);
+  send_commands(self);
+  ack_when_done(self);
+}
+
 bool recover(injector* self, int camera) {
   auto& st = self->state;
   auto& slot = st.net.cameras[camera];
-  if (slot) return false;  // it did not go down, or is already back
+  if (slot || st.spawning.count(camera) != 0) return false;  // it did not go down, or is back
   for (const auto& cam : st.scenario.cameras) {
     if (cam.id != camera) continue;
-    slot = spawn_camera_node(self->system(), st.scenario, cam, st.net.links[camera], st.net.world);
-    self->send(st.clock, join_atom_v, slot, camera_participant(cam));
     link_command cmd;
     cmd.op = link_op::attach;
     cmd.node = camera;
+    if (auto host = st.net.hosts.find(camera); host != st.net.hosts.end()) {
+      // Its worker spawns it again; the attachments take their place in this turn's commands
+      // now and the handle when it comes.
+      camera_placement p;
+      p.camera = camera;
+      for (const auto& [neighbour, link] : st.net.links[camera])
+        p.links.push_back({neighbour, link.participant, link.handle});
+      st.spawning[camera] = false;
+      self->request(host->second, caf::infinite, spawn_cameras_atom_v,
+                    std::vector<camera_placement>{std::move(p)})
+          .then(
+              [self, camera](std::vector<caf::actor>& handles) {
+                spawned_again(self, camera, handles.empty() ? caf::actor{} : handles.front());
+              },
+              [self, camera](caf::error& err) {
+                // The worker is gone: the clock ends the run for it (docs/distributed.md).
+                spdlog::error("faults: camera {} cannot recover: {}", camera,
+                              self->system().render(err));
+                spawned_again(self, camera, caf::actor{});
+              });
+      tell_links(self, camera, cmd);
+      return true;
+    }
+    slot = spawn_camera_node(self->system(), st.scenario, cam, st.net.links[camera], st.net.world);
+    self->send(st.clock, join_atom_v, slot, camera_participant(cam));
     cmd.handle = slot;
     tell_links(self, camera, cmd);
     return true;
@@ -181,7 +241,7 @@ void random_failures(injector* self, tick_context& ctx) {
   for (auto& [camera, handle] : st.net.cameras) {
     // One draw per camera per tick, alive or not, so one failure never shifts the others.
     bool fails = unit(st.rng) < st.failure_per_tick;
-    if (fails && handle && crash(self, camera))
+    if (fails && (handle || st.spawning.count(camera) != 0) && crash(self, camera))
       ctx.emit(events::fault_event{.fault = "crash",
                                    .camera = camera,
                                    .peer = std::nullopt,

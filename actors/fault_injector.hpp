@@ -1,6 +1,7 @@
 #pragma once
 
 #include <map>
+#include <string>
 #include <utility>
 
 #include "actors/camera_node.hpp"
@@ -18,6 +19,11 @@ struct network_directory {
   std::map<int, link_directory> links;
   /// What a camera senses with (a recovered camera gets the same); null for none.
   std::shared_ptr<const camera_world> world;
+  /// A distributed run's worker hosts by camera (actors/worker_host.hpp): a camera that
+  /// recovers from a crash is spawned again by its own. Empty when everything is local.
+  std::map<int, caf::actor> hosts;
+  /// The hosts' names by camera, for the clock (participant_info::host).
+  std::map<int, std::string> host_names;
 };
 
 /// The exit reason of a crash the injector causes. Not `exit_reason::kill`, which an actor

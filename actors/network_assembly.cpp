@@ -30,6 +30,13 @@ network_directory spawn_network(caf::actor_system& system, const config::scenari
     net.cameras.emplace(cam.id, node);
     caf::anon_send(clock, join_atom_v, node, camera_participant(cam));
   }
+  attach_and_join_links(net, links, clock);
+  return net;
+}
+
+void attach_and_join_links(const network_directory& net,
+                           const std::vector<std::pair<caf::actor, participant_info>>& links,
+                           const caf::actor& clock) {
   std::uint64_t seq = 0;
   for (const auto& [camera, neighbours] : net.links)
     for (const auto& [neighbour, link] : neighbours) {
@@ -41,7 +48,6 @@ network_directory spawn_network(caf::actor_system& system, const config::scenari
       caf::anon_send(link.handle, link_cmd_atom_v, mail_stamp{-1, 0, 0, seq++}, attach);
     }
   for (const auto& [handle, info] : links) caf::anon_send(clock, join_atom_v, handle, info);
-  return net;
 }
 
 }  // namespace argus::actors

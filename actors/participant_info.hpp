@@ -27,11 +27,14 @@ struct participant_info {
   /// Answers `(flush_atom)` with `done_atom` when the run ends, after handing its links what
   /// it still holds for them, before any participant reports (camera nodes do).
   bool flushes_at_end = false;
+  /// The worker it runs on (HOST:PORT) in a distributed run; empty in the clock's own process.
+  /// A participant lost with its connection ends the run naming it (docs/distributed.md).
+  std::string host{};
 };
 
 template <class Inspector>
 typename Inspector::result_type inspect(Inspector& f, participant_info& x) {
-  return f(x.id, x.name, x.tick_phase, x.mode, x.reports_at_end, x.flushes_at_end);
+  return f(x.id, x.name, x.tick_phase, x.mode, x.reports_at_end, x.flushes_at_end, x.host);
 }
 
 }  // namespace argus::actors

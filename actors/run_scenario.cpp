@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "actors/camera_world_setup.hpp"
 #include "actors/clock.hpp"
 #include "actors/fault_injector.hpp"
 #include "actors/network_assembly.hpp"
@@ -12,19 +13,24 @@
 #include "actors/participant_ids.hpp"
 #include "actors/progress_printer.hpp"
 #include "actors/recorder.hpp"
+#include "actors/remote_network.hpp"
 #include "actors/render_pool.hpp"
+#include "actors/run_observer.hpp"
 #include "actors/scenario_script.hpp"
 #include "actors/system_config.hpp"
 #include "actors/type_ids.hpp"
 #include "actors/video_recorder.hpp"
+#include "actors/wire_world.hpp"
+#include "actors/worker_pool.hpp"
 #include "actors/world_coordinator.hpp"
+#include "config/scenario_writer.hpp"
 #include "config/ticks.hpp"
 #include "config/whole_file.hpp"
 #include "controller/strategy_registry.hpp"
-#include "eval/instruments.hpp"
 #include "eval/metrics.hpp"
 #include "eval/mot_export.hpp"
 #include "eval/run_files.hpp"
+#include "fmt/format.h"
 #include "live/command_log.hpp"
 #include "nlohmann/json.hpp"
 #include "protocol/topology.hpp"
@@ -63,46 +69,47 @@ void evaluate_run(const config::scenario& scenario, const world::station& statio
   if (options.mot) eval::write_mot(dir / "mot", scenario, log, end_tick);
 }
 
-// What the host watches camera nodes for: the operator's picks for the evaluation, and the
-// live console's display (pose, frame, the sensor's boxes, traffic).
-class run_observer final : public node_observer {
- public:
-  run_observer(std::shared_ptr<eval::observation_log> log,
-               std::shared_ptr<live::console_state> console)
-      : log_(std::move(log)), console_(std::move(console)) {}
+// What a distributed run cannot do yet, said before anything starts (docs/distributed.md).
+void check_distributable(const config::scenario& scenario, const run_options& options) {
+  auto refuse = [](const std::string& what) {
+    throw std::runtime_error("--workers: " + what + " runs in one process only, for now");
+  };
+  if (options.live) refuse("a live run (argus serve)");
+  if (options.video) refuse("--video");
+  if (scenario.sensing.geometry != config::group_geometry::none)
+    refuse("sensing.group_geometry (cameras share a board)");
+  if (scenario.sensing.reappearance != config::reappearance_model::none)
+    refuse("sensing.reappearance (cameras share a board)");
+  if (controller::is_oracle(scenario)) refuse("an oracle strategy (it sees every camera)");
+}
 
-  void traffic(int, std::uint64_t sent, std::uint64_t received) override {
-    if (console_) console_->add_traffic(sent, received);
-  }
-  void picked(const task_pick& p) override {
-    log_->add_origin({p.task, p.pedestrian, p.camera, p.tick, choice_of(p.by)});
-  }
-  void turn_done(int camera, std::int64_t tick, const vision::ptz_state& pose, const cv::Mat& image,
-                 const std::vector<controller::look_result>& looks) override {
-    if (!console_) return;
-    std::vector<cv::Rect2d> boxes;
-    for (const auto& look : looks)
-      if (look.found) boxes.push_back(look.box);
-    console_->publish_camera(camera, tick, pose.pan_deg, pose.tilt_deg, pose.field_of_view_deg,
-                             image, std::move(boxes));
-  }
+// What a worker needs to host its part of `scenario`: the scenario and the files it names.
+worker_setup setup_for_workers(const config::scenario& scenario, const run_options& options,
+                               caf::actor anchor) {
+  worker_setup setup;
+  setup.scenario_yaml = config::to_yaml(scenario);
+  setup.layout_text = config::read_whole_file(world::layout_path(scenario));
+  if (!scenario.sensing.sensor_model.empty())
+    setup.sensor_model_text = config::read_whole_file(sensor_model_path(scenario));
+  setup.with_visible = options.mot;
+  setup.coordinator = std::move(anchor);
+  return setup;
+}
 
- private:
-  static eval::target_choice choice_of(config::task_target by) {
-    switch (by) {
-      case config::task_target::pedestrian:
-        return eval::target_choice::pedestrian;
-      case config::task_target::pixel:
-        return eval::target_choice::pixel;
-      case config::task_target::first_to_enter:
-        return eval::target_choice::first_to_enter;
-    }
-    return eval::target_choice::pedestrian;
+// The world's first snapshot, which the crowd's spawner published before any tick, on every
+// worker's board too.
+void share_first_snapshot(caf::actor_system& system, const std::vector<worker_contact>& workers,
+                          const world::snapshot& first) {
+  caf::scoped_actor self{system};
+  for (const auto& w : workers) {
+    std::string failure;
+    self->request(w.host, std::chrono::seconds(10), board_atom_v, to_wire(first),
+                  std::vector<eval::task_origin>{})
+        .receive([](done_atom) {}, [&](caf::error& err) { failure = system.render(err); });
+    if (!failure.empty())
+      throw std::runtime_error(fmt::format("worker {} (the first snapshot): {}", w.name, failure));
   }
-
-  std::shared_ptr<eval::observation_log> log_;
-  std::shared_ptr<live::console_state> console_;
-};
+}
 
 }  // namespace
 
@@ -115,11 +122,19 @@ run_outcome run_scenario(const config::scenario& scenario, bool show_progress) {
 run_outcome run_scenario(const config::scenario& scenario, const run_options& options) {
   // A strategy that cannot be made fails here, naming the field, before any actor runs.
   controller::resolve_strategy(scenario);
+  const auto& pool_of_workers = options.workers;
+  if (pool_of_workers) check_distributable(scenario, options);
   const bool show_progress = options.show_progress;
   auto threads = scenario.run.threads != 0 ? scenario.run.threads
                                            : std::max(1u, std::thread::hardware_concurrency());
   system_config cfg(threads);
+  if (pool_of_workers) pool_of_workers->configure(cfg);
   caf::actor_system system{cfg};
+  std::vector<worker_contact> workers;
+  if (pool_of_workers) {
+    workers = pool_of_workers->connect(system);
+    greet_workers(system, workers, std::chrono::seconds(10));
+  }
 
   run_outcome outcome;
   outcome.output_dir = output_dir_of(scenario);
@@ -135,39 +150,33 @@ run_outcome run_scenario(const config::scenario& scenario, const run_options& op
   // Kept for the evaluation: world_settings goes to the world actors.
   const auto station = world_settings.station;
   render_pool pool;
-  const bool pixels = scenario.sensing.mode == config::sensing_mode::pixels;
   const std::size_t renderers = options.render_threads != 0 ? options.render_threads : threads;
   if (options.video) pool = spawn_render_pool(system, world_settings.station, renderers);
-  auto cameras_world = std::make_shared<camera_world>();
-  cameras_world->station = world_settings.station;
-  cameras_world->board = std::make_shared<snapshot_board>();
-  try {
-    if (pixels)
-      cameras_world->renderers =
-          std::make_shared<shared_renderers>(world_settings.station, renderers);
-  } catch (...) {
-    if (pool.front) caf::anon_send_exit(pool.front, caf::exit_reason::user_shutdown);
-    throw;
-  }
-  if (!scenario.sensing.sensor_model.empty())
-    cameras_world->sensor_model = vision::load_sensor_model(sensor_model_path(scenario).string());
   auto log = std::make_shared<eval::observation_log>(options.mot);
+  std::shared_ptr<camera_world> cameras_world;
+  if (workers.empty()) {
+    try {
+      vision::sensor_model model;
+      if (!scenario.sensing.sensor_model.empty())
+        model = vision::load_sensor_model(sensor_model_path(scenario).string());
+      cameras_world =
+          make_camera_world(scenario, world_settings.station, std::move(model), renderers, log);
+    } catch (...) {
+      if (pool.front) caf::anon_send_exit(pool.front, caf::exit_reason::user_shutdown);
+      throw;
+    }
+  } else {
+    // The cameras sense on their workers; here the board only feeds the evaluation.
+    cameras_world = std::make_shared<camera_world>();
+    cameras_world->station = world_settings.station;
+    cameras_world->board = std::make_shared<snapshot_board>();
+    for (const auto& w : workers) world_settings.remote_boards.push_back(w.host);
+    world_settings.picks_gathered = [log](const std::vector<eval::task_origin>& picks) {
+      for (const auto& p : picks) log->add_origin_if_new(p);
+    };
+  }
   cameras_world->board->subscribe(
       [log](const std::shared_ptr<const world::snapshot>& frame) { sample_targets(*log, *frame); });
-  auto instruments = std::make_shared<const eval::instruments>(
-      scenario, world_settings.station, [board = cameras_world->board] { return board->latest(); },
-      log);
-  cameras_world->wrap_sensor = [instruments](const config::camera_settings& camera,
-                                             std::unique_ptr<sensing::sensor> sensor) {
-    return instruments->wrap(camera, std::move(sensor));
-  };
-  cameras_world->wrap_strategy = [instruments](const config::camera_settings& camera,
-                                               std::unique_ptr<controller::strategy> strategy) {
-    return instruments->wrap(camera, std::move(strategy));
-  };
-  cameras_world->oracle_for = [instruments](const config::camera_settings& camera) {
-    return instruments->oracle_for(camera);
-  };
   world_settings.board = cameras_world->board;
   const auto& live = options.live;
   std::shared_ptr<operator_board> operators;
@@ -181,7 +190,7 @@ run_outcome run_scenario(const config::scenario& scenario, const run_options& op
       console->publish_snapshot(frame);
     });
   }
-  cameras_world->observer = std::make_shared<run_observer>(log, console);
+  if (workers.empty()) cameras_world->observer = std::make_shared<run_observer>(log, console);
   if (options.video) {
     video_settings vs;
     vs.file = outcome.output_dir / "video" / "feeds.avi";
@@ -236,7 +245,27 @@ run_outcome run_scenario(const config::scenario& scenario, const run_options& op
 
   // Joins and link attachments go out from this thread, in this order, before `start`:
   // enqueued in program order, they all reach their receivers before the first tick.
-  auto net = spawn_network(system, scenario, topo, clock, std::move(cameras_world));
+  auto board = cameras_world->board;
+  // Lives until the workers have handed over their logs: they watch it, and end what they
+  // host when it goes (with this process or its connection).
+  caf::actor anchor;
+  if (!workers.empty()) anchor = system.spawn([]() -> caf::behavior { return {[](done_atom) {}}; });
+  network_directory net;
+  if (workers.empty()) {
+    net = spawn_network(system, scenario, topo, clock, std::move(cameras_world));
+  } else {
+    try {
+      net = spawn_remote_network(system, scenario, topo, clock, workers,
+                                 setup_for_workers(scenario, options, anchor));
+    } catch (...) {
+      // Nothing has started: end what did spawn, here and on the workers, then say why.
+      for (const auto& a : {clock, recorder, progress, anchor})
+        if (a) caf::anon_send_exit(a, caf::exit_reason::user_shutdown);
+      caf::scoped_actor self{system};
+      for (const auto& w : workers) self->send(w.host, release_atom_v);
+      throw;
+    }
+  }
   auto script = spawn_scenario_script(system, scenario, clock, log, live, operators);
   caf::anon_send(clock, join_atom_v, script, script_participant(live != nullptr));
   auto faults = spawn_fault_injector(system, scenario, clock, std::move(net), live);
@@ -248,6 +277,7 @@ run_outcome run_scenario(const config::scenario& scenario, const run_options& op
   world_settings.trajectories = outcome.output_dir / "trajectories.csv";
   for (auto& [handle, info] : spawn_world(system, std::move(world_settings)).participants)
     caf::anon_send(clock, join_atom_v, handle, info);
+  if (!workers.empty()) share_first_snapshot(system, workers, *board->latest());
 
   std::string failure;
   {
@@ -259,6 +289,10 @@ run_outcome run_scenario(const config::scenario& scenario, const run_options& op
   if (progress) caf::anon_send_exit(progress, caf::exit_reason::user_shutdown);
   // The render workers are detached threads linked to the front: end them with it.
   if (pool.front) caf::anon_send_exit(pool.front, caf::exit_reason::user_shutdown);
+  if (!workers.empty()) {
+    finish_workers(system, workers, *log, std::chrono::seconds(10));
+    caf::anon_send_exit(anchor, caf::exit_reason::user_shutdown);
+  }
   if (!failure.empty()) {
     caf::anon_send_exit(clock, caf::exit_reason::user_shutdown);
     caf::anon_send_exit(recorder, caf::exit_reason::user_shutdown);

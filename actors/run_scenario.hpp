@@ -41,6 +41,9 @@ struct run_options {
   std::shared_ptr<live::session> live;
   /// The scenario's station when the caller has loaded it already (argus serve); null: load it.
   std::shared_ptr<const world::station> station;
+  /// A distributed run (docs/distributed.md): the workers that host the camera nodes and their
+  /// links. Null: everything runs in this process, and no network layer is loaded.
+  std::shared_ptr<const class worker_pool> workers;
 };
 
 /// Runs a validated scenario to its end on a CAF scheduler with `scenario.run.threads` worker

@@ -16,6 +16,9 @@
 #include "actors/run_result.hpp"
 #include "actors/sim_event.hpp"
 #include "actors/tick_ack.hpp"
+#include "actors/wire_log.hpp"
+#include "actors/wire_world.hpp"
+#include "actors/worker_protocol.hpp"
 #include "actors/world_update.hpp"
 #include "caf/all.hpp"
 #include "protocol/net_message.hpp"
@@ -41,6 +44,13 @@ CAF_ADD_TYPE_ID(argus, (argus::actors::partition_report))
 CAF_ADD_TYPE_ID(argus, (argus::actors::render_request))
 CAF_ADD_TYPE_ID(argus, (argus::actors::render_result))
 CAF_ADD_TYPE_ID(argus, (std::shared_ptr<const argus::world::snapshot>))
+CAF_ADD_TYPE_ID(argus, (argus::actors::wire_snapshot))
+CAF_ADD_TYPE_ID(argus, (argus::eval::task_origin))
+CAF_ADD_TYPE_ID(argus, (std::vector<argus::eval::task_origin>))
+CAF_ADD_TYPE_ID(argus, (argus::eval::observation_log::contents))
+CAF_ADD_TYPE_ID(argus, (argus::actors::worker_setup))
+CAF_ADD_TYPE_ID(argus, (argus::actors::camera_placement))
+CAF_ADD_TYPE_ID(argus, (std::vector<argus::actors::camera_placement>))
 
 CAF_ADD_ATOM(argus, argus::actors, tick_atom, "tick")
 CAF_ADD_ATOM(argus, argus::actors, join_atom, "join")
@@ -62,5 +72,12 @@ CAF_ADD_ATOM(argus, argus::actors, render_atom, "render")
 CAF_ADD_ATOM(argus, argus::actors, world_snapshot_atom, "w_snap")
 CAF_ADD_ATOM(argus, argus::actors, flush_atom, "flush")
 CAF_ADD_ATOM(argus, argus::actors, node_state_atom, "node_st")
+CAF_ADD_ATOM(argus, argus::actors, worker_hello_atom, "w_hello")
+CAF_ADD_ATOM(argus, argus::actors, worker_setup_atom, "w_setup")
+CAF_ADD_ATOM(argus, argus::actors, spawn_cameras_atom, "w_cams")
+CAF_ADD_ATOM(argus, argus::actors, gather_atom, "w_gather")
+CAF_ADD_ATOM(argus, argus::actors, board_atom, "w_board")
+CAF_ADD_ATOM(argus, argus::actors, take_log_atom, "w_take")
+CAF_ADD_ATOM(argus, argus::actors, release_atom, "w_release")
 
 CAF_END_TYPE_ID_BLOCK(argus)

@@ -1,5 +1,6 @@
 #include "actors/world_coordinator.hpp"
 
+#include <algorithm>
 #include <fstream>
 #include <optional>
 #include <stdexcept>
@@ -10,7 +11,9 @@
 #include "actors/participant_ids.hpp"
 #include "actors/tick_context.hpp"
 #include "actors/type_ids.hpp"
+#include "actors/wire_world.hpp"
 #include "fmt/format.h"
+#include "spdlog/spdlog.h"
 #include "world/appearance_writer.hpp"
 #include "world/trajectory_writer.hpp"
 
@@ -60,6 +63,17 @@ struct coordinator_setup {
   std::vector<caf::actor> partitions;
   std::vector<std::pair<caf::actor, std::uint64_t>> snapshot_observers;
   std::shared_ptr<snapshot_board> board;
+  std::vector<caf::actor> remote_boards;
+  std::function<void(const std::vector<eval::task_origin>&)> picks_gathered;
+};
+
+// A distributed tick in progress: the answers still awaited from the workers, then the ack.
+struct remote_exchange {
+  std::optional<tick_context> ctx;
+  caf::actor clock;
+  std::vector<std::pair<mail_stamp, partition_report>> due;
+  std::vector<eval::task_origin> picks;
+  std::size_t waiting = 0;
 };
 
 struct world_coordinator_state {
@@ -68,6 +82,7 @@ struct world_coordinator_state {
   std::shared_ptr<const world::snapshot> current;
   ordered_inbox<partition_report> reports;
   std::uint64_t sent = 0;
+  remote_exchange exchange;
 };
 
 // Opens `<path>.partial` and pedestrians.csv.partial beside it; throws when either cannot be
@@ -162,12 +177,73 @@ void step_world(caf::stateful_actor<world_coordinator_state>* self, tick_context
   }
 }
 
+// The workers' answers: a failed one means the worker is gone, and the clock ends the run for
+// it (it monitors the worker's cameras), so this tick is never acknowledged.
+void worker_failed(caf::stateful_actor<world_coordinator_state>* self, const caf::error& err) {
+  spdlog::error("world: a worker did not answer: {}", self->system().render(err));
+}
+
+void publish_to_workers(caf::stateful_actor<world_coordinator_state>* self) {
+  auto& st = self->state;
+  auto& ex = st.exchange;
+  ex.waiting = st.setup->remote_boards.size();
+  const auto frame = to_wire(*st.current);
+  for (const auto& board : st.setup->remote_boards)
+    self->request(board, caf::infinite, board_atom_v, frame, ex.picks)
+        .then(
+            [self](done_atom) {
+              auto& ex = self->state.exchange;
+              if (--ex.waiting != 0) return;
+              self->send(ex.clock, std::move(*ex.ctx).finish());
+              ex.ctx.reset();
+              ex.clock = caf::actor{};
+              ex.picks.clear();
+            },
+            [self](caf::error& err) { worker_failed(self, err); });
+}
+
+void gather_picks(caf::stateful_actor<world_coordinator_state>* self, tick_context ctx,
+                  caf::actor clock, std::vector<std::pair<mail_stamp, partition_report>> due) {
+  auto& st = self->state;
+  auto& ex = st.exchange;
+  ex.ctx.emplace(std::move(ctx));
+  ex.clock = std::move(clock);
+  ex.due = std::move(due);
+  ex.waiting = st.setup->remote_boards.size();
+  for (const auto& board : st.setup->remote_boards)
+    self->request(board, caf::infinite, gather_atom_v)
+        .then(
+            [self](std::vector<eval::task_origin>& picks) {
+              auto& st = self->state;
+              auto& ex = st.exchange;
+              ex.picks.insert(ex.picks.end(), picks.begin(), picks.end());
+              if (--ex.waiting != 0) return;
+              // Whatever order the workers answered in.
+              std::sort(ex.picks.begin(), ex.picks.end(),
+                        [](const auto& a, const auto& b) { return a.task < b.task; });
+              if (st.setup->picks_gathered) st.setup->picks_gathered(ex.picks);
+              step_world(self, *ex.ctx, std::move(ex.due));
+              publish_to_workers(self);
+            },
+            [self](caf::error& err) { worker_failed(self, err); });
+}
+
 caf::behavior world_coordinator(caf::stateful_actor<world_coordinator_state>* self,
                                 coordinator_setup setup) {
   auto& st = self->state;
   st.info = world_coordinator_participant();
   st.current = setup.initial;
   st.setup.emplace(std::move(setup));
+  // A run that ends early (a lost worker, a strategy that raised) still leaves whole files:
+  // every row written is a whole tick, so they get their names up to where the world got.
+  self->set_exit_handler([self](caf::exit_msg& msg) {
+    if (auto& file = self->state.setup->trajectories) {
+      file->rows.finish();
+      file->looks.finish();
+      file.reset();
+    }
+    self->quit(msg.reason);
+  });
   return {
       [self](world_report_atom, const mail_stamp& stamp, partition_report& report) {
         self->state.reports.put(stamp, std::move(report));
@@ -176,8 +252,13 @@ caf::behavior world_coordinator(caf::stateful_actor<world_coordinator_state>* se
         auto& st = self->state;
         tick_context ctx(st.info.id, st.info.name, tick, st.info.tick_phase);
         auto due = st.reports.take_due(tick, p);
+        auto clock = caf::actor_cast<caf::actor>(self->current_sender());
+        if (!due.empty() && !st.setup->remote_boards.empty()) {
+          gather_picks(self, std::move(ctx), std::move(clock), std::move(due));
+          return;
+        }
         if (!due.empty()) step_world(self, ctx, std::move(due));
-        self->send(caf::actor_cast<caf::actor>(self->current_sender()), std::move(ctx).finish());
+        self->send(clock, std::move(ctx).finish());
       },
   };
 }
@@ -233,7 +314,8 @@ world_actors spawn_world(caf::actor_system& system, world_run_settings settings)
       world_coordinator,
       coordinator_setup{settings.station, bounds, std::move(spawner), cs.behaviour.tick_s,
                         snapshot0, settings.end_tick, std::move(trajectories), partitions,
-                        std::move(settings.snapshot_observers), settings.board});
+                        std::move(settings.snapshot_observers), settings.board,
+                        std::move(settings.remote_boards), std::move(settings.picks_gathered)});
   for (std::size_t i = 0; i < partitions.size(); ++i) {
     caf::anon_send(partitions[i], world_attach_atom_v, coordinator);
     out.participants.emplace_back(partitions[i], crowd_partition_participant(i));

@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -10,6 +11,7 @@
 #include "actors/snapshot_board.hpp"
 #include "caf/actor.hpp"
 #include "caf/fwd.hpp"
+#include "eval/records.hpp"
 #include "world/crowd.hpp"
 #include "world/station.hpp"
 
@@ -35,6 +37,13 @@ struct world_run_settings {
   std::vector<std::pair<caf::actor, std::uint64_t>> snapshot_observers;
   /// Where camera nodes read the latest snapshot (snapshot_board.hpp); null for none.
   std::shared_ptr<snapshot_board> board;
+  /// A distributed run's workers (actors/worker_host.hpp), whose cameras read boards of their
+  /// own. Before each publication the coordinator gathers the picks their cameras made
+  /// (`gather_atom`) and hands them to `picks_gathered`, so the local board's subscribers see
+  /// them as in one process; after it, it sends every worker the snapshot and every pick
+  /// (`board_atom`), and acknowledges its tick once all have answered.
+  std::vector<caf::actor> remote_boards;
+  std::function<void(const std::vector<eval::task_origin>&)> picks_gathered;
 };
 
 /// The actors of a run's crowd, to join to the clock.

@@ -52,6 +52,9 @@ void add_serve_command(CLI::App& app, int& result);
 /// `result` to its exit code.
 void add_strategies_command(CLI::App& app, int& result);
 
+/// Adds `argus worker` (hosts camera nodes and links for a distributed run) to `app`; sets
+/// `result` to its exit code.
+void add_worker_command(CLI::App& app, int& result);
 /// Adds `argus validate` to `app`; its callback sets `result` to the command's exit code.
 void add_validate_command(CLI::App& app, int& result);
 

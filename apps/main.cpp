@@ -59,6 +59,7 @@ int main(int argc, char** argv) {
   argus::apps::add_sweep_command(app, result);
   argus::apps::add_chaos_command(app, result);
   argus::apps::add_generate_command(app, result);
+  argus::apps::add_worker_command(app, result);
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {

@@ -8,14 +8,19 @@
 #include <utility>
 
 #include "actors/run_scenario.hpp"
+#include "actors/worker_pool.hpp"
 #include "apps/commands.hpp"
 #include "apps/option_checks.hpp"
 #include "apps/run_overrides.hpp"
 #include "apps/run_record.hpp"
 #include "apps/set_option.hpp"
 #include "apps/task_option.hpp"
+#include "apps/tls_options.hpp"
 #include "config/scenario_error.hpp"
 #include "config/scenario_loader.hpp"
+#ifdef ARGUS_WITH_DISTRIBUTED
+#include "distributed/network_workers.hpp"
+#endif
 #include "eval/run_files.hpp"
 #include "fmt/format.h"
 #include "live/command_log.hpp"
@@ -36,6 +41,8 @@ struct run_arguments {
   bool no_feeds = false;
   std::vector<std::string> tasks;
   std::optional<std::string> commands;
+  std::optional<std::string> workers;
+  tls_arguments tls;
 };
 
 // `--video-size WxH`, each side 16 to 4096 pixels.
@@ -94,6 +101,23 @@ void print_outcome(const run_arguments& args, const config::scenario& s,
     std::cout << "  participants that died unexpectedly: " << r.unexpected_down.size() << '\n';
 }
 
+// `--workers HOST:PORT,...`: the pool a distributed run connects to; null for a run in this
+// process.
+std::shared_ptr<const actors::worker_pool> workers_of(const run_arguments& args) {
+  if (!args.workers) {
+    if (args.tls.given())
+      throw std::invalid_argument("--tls-cert, --tls-key and --tls-ca are for --workers");
+    return nullptr;
+  }
+#ifdef ARGUS_WITH_DISTRIBUTED
+  return std::make_shared<distributed::network_workers>(
+      distributed::parse_endpoints(*args.workers, "--workers"),
+      distributed::tls_files{args.tls.cert, args.tls.key, args.tls.ca});
+#else
+  throw std::invalid_argument("--workers: this build has no network layer (libcaf-io)");
+#endif
+}
+
 }  // namespace
 
 void add_run_command(CLI::App& app, int& result) {
@@ -116,6 +140,10 @@ void add_run_command(CLI::App& app, int& result) {
   cmd->add_option("--task", args->tasks,
                   "Add an operator task, e.g. 'at=10s,camera=7,pixel=160x120' (repeatable; keys "
                   "as in a scenario's tasks)");
+  cmd->add_option("--workers", args->workers,
+                  "Run the cameras and their links on these workers (argus worker), "
+                  "HOST:PORT,...; placement.policy says how (docs/distributed.md)");
+  add_tls_options(cmd, args->tls, "coordinator", "worker");
   cmd->add_option("--commands", args->commands,
                   "Replay the operator's commands of a live run (DIR/commands.yaml of argus "
                   "serve) at the ticks they took effect");
@@ -139,6 +167,13 @@ void add_run_command(CLI::App& app, int& result) {
       }
     }
     actors::run_options options;
+    try {
+      options.workers = workers_of(*args);
+    } catch (const std::invalid_argument& e) {
+      std::cerr << "argus run: " << e.what() << '\n';
+      result = bad_input;
+      return;
+    }
     std::tie(options.video_width_px, options.video_height_px) = parse_video_size(args->video_size);
     options.video = args->video;
     options.mot = args->mot;

@@ -42,6 +42,11 @@ void wait_for_interrupt() {
   sigwait(&signals, &received);
 }
 
+// Whether `address` reaches this machine's loopback only.
+bool is_loopback(const std::string& address) {
+  return address == "localhost" || address == "::1" || address.rfind("127.", 0) == 0;
+}
+
 int serve(const serve_arguments& args) {
   config::scenario scenario;
   try {
@@ -60,8 +65,13 @@ int serve(const serve_arguments& args) {
     serve::server_settings settings;
     settings.bind = args.bind;
     settings.port = args.port;
+    // Beyond loopback anyone who reaches the console could crash cameras: it then needs a
+    // secret, printed here once and nowhere else (docs/serve.md, "Beyond loopback").
+    if (!is_loopback(args.bind)) settings.token = serve::make_console_token();
     server.start(settings);
-    std::cout << fmt::format("argus serve: http://{}:{}/", args.bind, server.port()) << std::endl;
+    std::cout << fmt::format("argus serve: http://{}:{}/{}", args.bind, server.port(),
+                             settings.token.empty() ? "" : "?token=" + settings.token)
+              << std::endl;
     actors::run_options options;
     options.live = session;
     options.station = station;
@@ -107,7 +117,8 @@ void add_serve_command(CLI::App& app, int& result) {
   cmd->add_option("--port", args->port, "TCP port to serve on (0 = any free port)")
       ->check(integer_in(0, 65535));
   cmd->add_option("--bind", args->bind,
-                  "Address to listen on (default 127.0.0.1: this machine only)");
+                  "Address to listen on (default 127.0.0.1: this machine only; beyond loopback "
+                  "the console requires the secret it prints)");
   cmd->add_flag("--hold", args->hold,
                 "Keep serving after the run has ended, until interrupted (Ctrl-C)");
   cmd->callback([args, &result] { result = serve(*args); });

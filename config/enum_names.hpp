@@ -146,6 +146,15 @@ struct enum_names<sensing_mode> {
   }};
 };
 
+/// Names for placement.policy.
+template <>
+struct enum_names<placement_policy> {
+  static constexpr std::array<enum_entry<placement_policy>, 2> entries{{
+      {placement_policy::region, "region"},
+      {placement_policy::id, "id"},
+  }};
+};
+
 /// How an operator task names its target, as the event log writes it.
 template <>
 struct enum_names<task_target> {

@@ -435,6 +435,21 @@ struct fault {
 };
 
 /// A whole scenario file, validated, with every default filled in.
+/// How a distributed run (argus run --workers) shares its cameras among the workers
+/// (docs/distributed.md, "Placement"); a run in one process ignores it.
+enum class placement_policy {
+  /// Cameras in order along the station's longer side, one run of neighbours per worker: most
+  /// links join two cameras of the same worker, so most mail stays inside a process.
+  region,
+  /// Cameras by id, one block of consecutive ids per worker.
+  id,
+};
+
+struct placement_settings {
+  placement_policy policy = placement_policy::region;
+  friend bool operator==(const placement_settings&, const placement_settings&) = default;
+};
+
 struct scenario {
   std::string name;
   /// The file it was read from (empty when built in code).
@@ -447,6 +462,7 @@ struct scenario {
   sensing_settings sensing;
   std::vector<operator_task> tasks;
   std::vector<fault> faults;
+  placement_settings placement;
   friend bool operator==(const scenario&, const scenario&) = default;
 };
 

@@ -26,8 +26,10 @@ namespace argus::config {
 namespace {
 
 // The keys each mapping allows, in schema order (the order "expected one of" lists them).
-constexpr std::array<std::string_view, 9> scenario_keys{
-    "name", "run", "world", "cameras", "network", "controller", "sensing", "tasks", "faults"};
+constexpr std::array<std::string_view, 10> scenario_keys{
+    "name",       "run",     "world", "cameras", "network",
+    "controller", "sensing", "tasks", "faults",  "placement"};
+constexpr std::array<std::string_view, 1> placement_keys{"policy"};
 constexpr std::array<std::string_view, 15> sensing_keys{"mode",
                                                         "sensor_model",
                                                         "tracker_scales",
@@ -151,6 +153,7 @@ class scenario_parser {
     if (const auto node = document.find("sensing")) read_sensing(*node, out.sensing);
     if (const auto node = document.find("tasks")) read_tasks(*node, out.cameras, out.tasks);
     if (const auto node = document.find("faults")) read_faults(*node, out.faults);
+    if (const auto node = document.find("placement")) read_placement(*node, out.placement);
   }
 
  private:
@@ -512,6 +515,11 @@ class scenario_parser {
     controller.read("track_while_bidding", out.track_while_bidding);
     controller.read("share_model", out.share_model);
     controller.read("demotion_backoff_max", out.demotion_backoff_max, non_negative);
+  }
+
+  void read_placement(const YAML::Node& node, placement_settings& out) {
+    mapping_reader placement(reader_, node, "placement", placement_keys);
+    placement.read("policy", out.policy);
   }
 
   void read_sensing(const YAML::Node& node, sensing_settings& out) {

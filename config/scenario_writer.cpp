@@ -292,6 +292,9 @@ std::string to_yaml(const scenario& s) {
 
   out.line(0, s.faults.empty() ? "faults: []" : "faults:");
   for (const auto& each : s.faults) out.line(1, fault_line(each));
+
+  out.line(0, "placement:");
+  out.entry(1, "policy", yaml_name(s.placement.policy));
   return out.take();
 }
 

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <fstream>
+#include <iterator>
 #include <stdexcept>
 #include <system_error>
 
@@ -21,6 +22,18 @@ void write_whole_file(const std::filesystem::path& path,
   std::error_code ec;
   std::filesystem::rename(partial, path, ec);
   if (ec) throw std::runtime_error(fmt::format("cannot write {}: {}", path.string(), ec.message()));
+}
+
+}  // namespace argus::config
+
+namespace argus::config {
+
+std::string read_whole_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error(fmt::format("cannot read {}", path.string()));
+  std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  if (in.bad()) throw std::runtime_error(fmt::format("cannot read {}", path.string()));
+  return text;
 }
 
 }  // namespace argus::config

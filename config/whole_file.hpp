@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <functional>
 #include <iosfwd>
+#include <string>
 
 namespace argus::config {
 
@@ -11,5 +12,8 @@ namespace argus::config {
 /// file and a failed run leaves none; throws std::runtime_error naming the file.
 void write_whole_file(const std::filesystem::path& path,
                       const std::function<void(std::ostream&)>& write);
+
+/// The bytes of `path`; throws std::runtime_error naming the file when it cannot be read.
+std::string read_whole_file(const std::filesystem::path& path);
 
 }  // namespace argus::config

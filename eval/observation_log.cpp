@@ -1,6 +1,7 @@
 #include "eval/observation_log.hpp"
 
 #include <algorithm>
+#include <iterator>
 
 #include "world/snapshot.hpp"
 
@@ -19,6 +20,13 @@ void observation_log::add_origin(const task_origin& origin) {
 void observation_log::add_cancel(std::uint32_t task, std::int64_t tick) {
   std::lock_guard<std::mutex> guard(mutex_);
   data_.cancels.emplace(task, tick);
+}
+
+void observation_log::add_origin_if_new(const task_origin& origin) {
+  std::lock_guard<std::mutex> guard(mutex_);
+  for (const auto& o : data_.origins)
+    if (o.task == origin.task) return;
+  data_.origins.push_back(origin);
 }
 
 std::optional<int> observation_log::target_of(std::uint32_t task) const {
@@ -75,6 +83,23 @@ observation_log::contents observation_log::take() {
     return std::tie(a.tick, a.task) < std::tie(b.tick, b.task);
   });
   return out;
+}
+
+void observation_log::add_worker_share(contents part) {
+  for (const auto& o : part.origins) add_origin_if_new(o);
+  std::lock_guard<std::mutex> guard(mutex_);
+  for (auto& [camera, frames] : part.frames) {
+    auto& mine = data_.frames[camera];
+    mine.insert(mine.end(), std::make_move_iterator(frames.begin()),
+                std::make_move_iterator(frames.end()));
+    // A camera crashed and recovered may have frames from two hosts: keep them in tick order.
+    std::stable_sort(mine.begin(), mine.end(),
+                     [](const auto& a, const auto& b) { return a.tick < b.tick; });
+  }
+  for (const auto& [key, count] : part.sent) data_.sent[key] += count;
+  for (const auto& [task, by_tick] : part.sent_by_tick)
+    for (const auto& [tick, count] : by_tick) data_.sent_by_tick[task][tick] += count;
+  for (const auto& [key, count] : part.sent_after_cancel) data_.sent_after_cancel[key] += count;
 }
 
 void sample_targets(observation_log& log, const world::snapshot& frame) {

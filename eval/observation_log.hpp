@@ -47,6 +47,9 @@ class observation_log {
   /// (anything but the `cancel` it spreads): the protocol must send none.
   void add_sent_after_cancel(std::uint32_t task, std::string_view kind);
 
+  /// A pick that another process's camera made (a distributed run's mirror of the picks,
+  /// docs/distributed.md); ignored when the task's target is known already.
+  void add_origin_if_new(const task_origin& origin);
   /// Everything recorded, once the run is over.
   struct contents {
     std::map<int, std::vector<camera_frame>> frames;  // by camera, in tick order
@@ -58,6 +61,9 @@ class observation_log {
     std::map<std::pair<std::uint32_t, std::string>, std::uint64_t> sent_after_cancel;
   };
   contents take();
+  /// Adds what a worker's cameras recorded (its `take()`): their frames, the picks not known
+  /// here yet, and the messages they counted. Samples and cancellations are the coordinator's.
+  void add_worker_share(contents part);
 
  private:
   bool with_visible_ = false;

@@ -2,7 +2,9 @@
 
 #include <httplib.h>
 
+#include <random>
 #include <stdexcept>
+#include <string_view>
 
 #include "fmt/format.h"
 #include "nlohmann/json.hpp"
@@ -76,8 +78,65 @@ console_server::~console_server() {
   stop();
 }
 
+std::string make_console_token() {
+  std::random_device entropy;
+  std::string out;
+  for (int i = 0; i < 4; ++i) out += fmt::format("{:08x}", entropy());
+  return out;
+}
+
+namespace {
+
+// Compares in time independent of where the strings first differ.
+bool same_secret(std::string_view a, std::string_view b) {
+  if (a.size() != b.size()) return false;
+  unsigned char diff = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) diff |= static_cast<unsigned char>(a[i] ^ b[i]);
+  return diff == 0;
+}
+
+// The value of cookie `name` in a Cookie header, or empty.
+std::string_view cookie(std::string_view header, std::string_view name) {
+  while (!header.empty()) {
+    auto end = header.find(';');
+    auto item = header.substr(0, end);
+    while (!item.empty() && item.front() == ' ') item.remove_prefix(1);
+    if (item.size() > name.size() && item.substr(0, name.size()) == name &&
+        item[name.size()] == '=')
+      return item.substr(name.size() + 1);
+    if (end == std::string_view::npos) break;
+    header.remove_prefix(end + 1);
+  }
+  return {};
+}
+
+}  // namespace
+
+bool console_server::authorised(const httplib::Request& req, httplib::Response& res) const {
+  const auto& token = settings_.token;
+  if (token.empty()) return true;
+  if (req.has_param("token") && same_secret(req.get_param_value("token"), token)) {
+    // The page's own requests (the stream, the feeds, the commands) then carry the cookie.
+    res.set_header("Set-Cookie", "argus_token=" + token + "; Path=/; HttpOnly; SameSite=Strict");
+    return true;
+  }
+  const auto bearer = req.get_header_value("Authorization");
+  if (bearer.rfind("Bearer ", 0) == 0 && same_secret(std::string_view(bearer).substr(7), token))
+    return true;
+  return same_secret(cookie(req.get_header_value("Cookie"), "argus_token"), token);
+}
+
 void console_server::routes() {
   auto& svr = *server_;
+  svr.set_pre_routing_handler([this](const httplib::Request& req, httplib::Response& res) {
+    if (authorised(req, res)) return httplib::Server::HandlerResponse::Unhandled;
+    res.status = 401;
+    res.set_content(
+        "This console listens beyond loopback and needs its secret: open the address argus serve "
+        "printed (with ?token=...).\n",
+        "text/plain; charset=utf-8");
+    return httplib::Server::HandlerResponse::Handled;
+  });
   svr.Get("/", [](const httplib::Request&, httplib::Response& res) {
     res.set_content(std::string(console_page), "text/html; charset=utf-8");
   });

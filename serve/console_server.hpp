@@ -12,7 +12,9 @@
 
 namespace httplib {
 class Server;
-}
+struct Request;
+struct Response;
+}  // namespace httplib
 
 namespace argus::serve {
 
@@ -28,7 +30,15 @@ struct server_settings {
   int max_streams = 16;
   /// Interval between two live-stream messages.
   std::chrono::milliseconds stream_interval{200};
+  /// The console's secret, required of every request when set (`argus serve` sets one beyond
+  /// loopback, docs/serve.md): as `?token=` on the first page (which then keeps it in a
+  /// same-site, HTTP-only cookie for the page's own requests), the cookie `argus_token`, or
+  /// `Authorization: Bearer`. Anything else gets HTTP 401.
+  std::string token;
 };
+
+/// A fresh console secret: 128 bits from the system's entropy, as 32 hex digits.
+std::string make_console_token();
 
 /// The live operator console's HTTP server (cpp-httplib): the embedded page, the live stream of
 /// the run's state (Server-Sent Events), the feeds (JPEG) and the operator's commands. It only
@@ -59,6 +69,9 @@ class console_server {
 
  private:
   void routes();
+  /// Whether `req` carries the console's secret (or none is required); sets its cookie on `res`
+  /// when it came as `?token=`.
+  bool authorised(const httplib::Request& req, httplib::Response& res) const;
 
   config::scenario scenario_;
   std::shared_ptr<const world::station> station_;

@@ -110,6 +110,8 @@ struct pedestrian_state {
 
   /// Radius of the collision disc.
   double radius_m() const noexcept { return look.girth_m / 2.0 - squeeze_m; }
+
+  friend bool operator==(const pedestrian_state&, const pedestrian_state&) = default;
   /// Direction the body faces, radians from +x, counter-clockwise. Kept as a velocity and
   /// turned into an angle only when asked (the renderer, the trajectory file): in most ticks
   /// nobody asks, and an atan2 per walker per tick was 5 % of the crowd's step.

@@ -69,7 +69,7 @@ TEST(scenario_validation, unknown_top_level_key) {
   EXPECT_EQ(only_problem("name: x\ncamera: []\n"),
             (problem{"bad.yaml", 2, 1, "camera",
                      "unknown key 'camera' (expected one of: name, run, world, cameras, network, "
-                     "controller, sensing, tasks, faults); did you mean 'cameras'?"}));
+                     "controller, sensing, tasks, faults, placement); did you mean 'cameras'?"}));
 }
 
 TEST(scenario_validation, a_key_given_twice) {

@@ -20,13 +20,18 @@ class Serve:
             self.process.kill()
             raise RuntimeError("argus serve did not start: %r %s" %
                                (line, self.process.stderr.read()))
-        self.url = line.split(": ", 1)[1].strip().rstrip("/")
+        printed = line.split(": ", 1)[1].strip()
+        # Beyond loopback the console prints its secret once, as ?token= on its address.
+        base, _, self.token = printed.partition("/?token=")
+        self.url = base.rstrip("/").replace("//0.0.0.0:", "//127.0.0.1:")
 
     def request(self, method, path, body=None, raw=None, timeout=10):
         """(status, parsed JSON or bytes) of one request."""
         data = raw if raw is not None else (None if body is None else json.dumps(body).encode())
-        req = urllib.request.Request(self.url + path, data=data, method=method,
-                                     headers={"Content-Type": "application/json"})
+        headers = {"Content-Type": "application/json"}
+        if self.token:
+            headers["Authorization"] = "Bearer " + self.token
+        req = urllib.request.Request(self.url + path, data=data, method=method, headers=headers)
         try:
             with urllib.request.urlopen(req, timeout=timeout) as res:
                 status, payload, kind = res.status, res.read(), res.headers["Content-Type"]

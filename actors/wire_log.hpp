@@ -1,0 +1,56 @@
+#pragma once
+
+// The observation log's records as they cross between a worker and the coordinator
+// (docs/distributed.md): CAF inspectors, so the middleman serialises them.
+
+#include <cstdint>
+
+#include "eval/observation_log.hpp"
+#include "eval/records.hpp"
+#include "vision/ptz_camera.hpp"
+
+namespace argus::vision {
+
+template <class Inspector>
+typename Inspector::result_type inspect(Inspector& f, ptz_state& x) {
+  return f(x.pan_deg, x.tilt_deg, x.field_of_view_deg);
+}
+
+}  // namespace argus::vision
+
+namespace argus::eval {
+
+// cv::Rect2d is OpenCV's, out of reach of argument-dependent lookup: its members go one by one.
+template <class Inspector>
+typename Inspector::result_type inspect(Inspector& f, look_record& x) {
+  return f(x.task, x.leader, x.found, x.box.x, x.box.y, x.box.width, x.box.height, x.score, x.truth,
+           x.iou, x.observed);
+}
+
+template <class Inspector>
+typename Inspector::result_type inspect(Inspector& f, visible_box& x) {
+  return f(x.pedestrian, x.box.x, x.box.y, x.box.width, x.box.height, x.visibility);
+}
+
+template <class Inspector>
+typename Inspector::result_type inspect(Inspector& f, camera_frame& x) {
+  return f(x.tick, x.camera, x.pose, x.state, x.looks, x.visible);
+}
+
+template <class Inspector>
+typename Inspector::result_type inspect(Inspector& f, task_origin& x) {
+  return f(x.task, x.pedestrian, x.camera, x.tick, x.by);
+}
+
+template <class Inspector>
+typename Inspector::result_type inspect(Inspector& f, target_sample& x) {
+  return f(x.tick, x.task, x.pedestrian, x.x_m, x.y_m, x.height_m, x.present);
+}
+
+/// A worker sends its whole log when the run is over (actors/worker_host.hpp).
+template <class Inspector>
+typename Inspector::result_type inspect(Inspector& f, observation_log::contents& x) {
+  return f(x.frames, x.origins, x.cancels, x.samples, x.sent, x.sent_by_tick, x.sent_after_cancel);
+}
+
+}  // namespace argus::eval

@@ -1,0 +1,211 @@
+#include "actors/worker_host.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <mutex>
+#include <optional>
+#include <random>
+#include <utility>
+#include <vector>
+
+#include "actors/camera_node.hpp"
+#include "actors/camera_world_setup.hpp"
+#include "actors/link.hpp"
+#include "actors/run_observer.hpp"
+#include "actors/type_ids.hpp"
+#include "config/scenario_loader.hpp"
+#include "controller/strategy_registry.hpp"
+#include "fmt/format.h"
+#include "spdlog/spdlog.h"
+
+namespace argus::actors {
+
+const char* argus_version() {
+  return ARGUS_VERSION;
+}
+
+namespace {
+
+// The picks a worker's cameras made since the coordinator last asked; cameras add from their
+// turns, on any thread.
+class pick_outbox {
+ public:
+  void add(const eval::task_origin& o) {
+    std::lock_guard<std::mutex> guard(mutex_);
+    picks_.push_back(o);
+  }
+  std::vector<eval::task_origin> take() {
+    std::lock_guard<std::mutex> guard(mutex_);
+    auto out = std::move(picks_);
+    picks_.clear();
+    std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.task < b.task; });
+    return out;
+  }
+
+ private:
+  std::mutex mutex_;
+  std::vector<eval::task_origin> picks_;
+};
+
+// The files a setup carries, written where this worker can load them, removed with the run.
+class setup_files {
+ public:
+  setup_files() {
+    std::random_device entropy;
+    dir_ = std::filesystem::temp_directory_path() /
+           fmt::format("argus-worker-{:016x}", (std::uint64_t{entropy()} << 32) | entropy());
+    std::filesystem::create_directories(dir_);
+  }
+  ~setup_files() {
+    std::error_code ignored;
+    std::filesystem::remove_all(dir_, ignored);
+  }
+  setup_files(const setup_files&) = delete;
+  setup_files& operator=(const setup_files&) = delete;
+
+  std::filesystem::path write(const std::string& name, const std::string& text) const {
+    auto file = dir_ / name;
+    std::ofstream out(file, std::ios::binary);
+    out << text;
+    if (!out) throw std::runtime_error("cannot write " + file.string());
+    return file;
+  }
+
+ private:
+  std::filesystem::path dir_;
+};
+
+struct hosted_run {
+  config::scenario scenario;
+  std::unique_ptr<setup_files> files;
+  std::shared_ptr<eval::observation_log> log;
+  std::shared_ptr<pick_outbox> picks;
+  std::shared_ptr<camera_world> world;
+  std::vector<caf::actor> spawned;
+};
+
+struct worker_host_state {
+  std::string name;
+  std::size_t render_threads = 1;
+  std::optional<hosted_run> run;
+};
+
+using host_actor = caf::stateful_actor<worker_host_state>;
+
+caf::error refuse(std::string why) {
+  return caf::make_error(caf::sec::runtime_error, std::move(why));
+}
+
+void end_run(host_actor* self) {
+  auto& st = self->state;
+  if (!st.run) return;
+  for (auto& a : st.run->spawned) self->send_exit(a, caf::exit_reason::user_shutdown);
+  st.run.reset();
+}
+
+caf::result<std::vector<caf::actor>> set_up(host_actor* self, worker_setup& setup) {
+  auto& st = self->state;
+  if (st.run) return refuse(fmt::format("worker {} is busy with another run", st.name));
+  try {
+    hosted_run run;
+    run.files = std::make_unique<setup_files>();
+    run.scenario = config::parse_scenario(setup.scenario_yaml, "the coordinator's scenario");
+    controller::resolve_strategy(run.scenario);
+    auto station = world::station::load(run.files->write("layout.yaml", setup.layout_text));
+    vision::sensor_model model;
+    if (!setup.sensor_model_text.empty())
+      model = vision::load_sensor_model(
+          run.files->write("sensor_model.yaml", setup.sensor_model_text).string());
+    run.log = std::make_shared<eval::observation_log>(setup.with_visible);
+    run.picks = std::make_shared<pick_outbox>();
+    run.world = make_camera_world(run.scenario, station, std::move(model),
+                                  std::max<std::size_t>(1, st.render_threads), run.log);
+    run.world->observer = std::make_shared<run_observer>(
+        run.log, nullptr, [picks = run.picks](const eval::task_origin& o) { picks->add(o); });
+    auto model_of_links = make_link_model(run.scenario);
+    std::vector<caf::actor> links;
+    for (const auto& l : setup.links) {
+      links.push_back(spawn_link(self->system(), run.scenario, model_of_links, l.index, l.a, l.b));
+      run.spawned.push_back(links.back());
+    }
+    if (setup.coordinator) self->monitor(setup.coordinator);
+    st.run = std::move(run);
+    spdlog::info("worker {}: hosting '{}' ({} links)", st.name, st.run->scenario.name,
+                 links.size());
+    return links;
+  } catch (const std::exception& e) {
+    return refuse(fmt::format("worker {} cannot host the run: {}", st.name, e.what()));
+  }
+}
+
+caf::result<std::vector<caf::actor>> spawn_cameras(host_actor* self,
+                                                   std::vector<camera_placement>& cameras) {
+  auto& st = self->state;
+  if (!st.run) return refuse(fmt::format("worker {} has no run to spawn cameras in", st.name));
+  std::vector<caf::actor> out;
+  for (auto& c : cameras) {
+    const auto& all = st.run->scenario.cameras;
+    auto it =
+        std::find_if(all.begin(), all.end(), [&](const auto& cam) { return cam.id == c.camera; });
+    if (it == all.end())
+      return refuse(fmt::format("worker {}: the scenario has no camera {}", st.name, c.camera));
+    link_directory links;
+    for (auto& l : c.links) links[l.neighbour] = attached_link{l.participant, std::move(l.handle)};
+    auto node =
+        spawn_camera_node(self->system(), st.run->scenario, *it, std::move(links), st.run->world);
+    st.run->spawned.push_back(node);
+    out.push_back(std::move(node));
+  }
+  return out;
+}
+
+caf::behavior worker_host(host_actor* self, std::string name, std::size_t render_threads) {
+  self->state.name = std::move(name);
+  self->state.render_threads = render_threads;
+  // A coordinator that goes away leaves nothing behind: what it spawned here ends with it.
+  self->set_down_handler([self](caf::down_msg&) { end_run(self); });
+  return {
+      [self](worker_hello_atom,
+             const std::string& version) -> caf::result<std::string, std::string> {
+        if (version != argus_version())
+          return refuse(fmt::format("worker {} runs Argus {} and the coordinator Argus {}",
+                                    self->state.name, argus_version(), version));
+        return {std::string(argus_version()), self->state.name};
+      },
+      [self](worker_setup_atom, worker_setup& setup) { return set_up(self, setup); },
+      [self](spawn_cameras_atom, std::vector<camera_placement>& cameras) {
+        return spawn_cameras(self, cameras);
+      },
+      [self](gather_atom) -> std::vector<eval::task_origin> {
+        auto& st = self->state;
+        if (!st.run) return {};
+        return st.run->picks->take();
+      },
+      [self](board_atom, wire_snapshot& frame, const std::vector<eval::task_origin>& picks) {
+        auto& st = self->state;
+        if (!st.run) return done_atom_v;
+        for (const auto& o : picks) st.run->log->add_origin_if_new(o);
+        st.run->world->board->publish(from_wire(*st.run->world->station, std::move(frame)));
+        return done_atom_v;
+      },
+      [self](take_log_atom) -> eval::observation_log::contents {
+        auto& st = self->state;
+        if (!st.run) return {};
+        return st.run->log->take();
+      },
+      [self](release_atom) {
+        end_run(self);
+        return done_atom_v;
+      },
+  };
+}
+
+}  // namespace
+
+caf::actor spawn_worker_host(caf::actor_system& system, std::string name,
+                             std::size_t render_threads) {
+  return system.spawn(worker_host, std::move(name), render_threads);
+}
+
+}  // namespace argus::actors

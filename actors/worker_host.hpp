@@ -1,0 +1,36 @@
+#pragma once
+
+#include <cstddef>
+#include <string>
+
+#include "caf/fwd.hpp"
+
+namespace argus::actors {
+
+/// The Argus version a coordinator and its workers must share: the same code steps the same
+/// world, so a run stays the same to the byte only between equal versions.
+const char* argus_version();
+
+/// Spawns the actor that hosts a worker's part of a distributed run (docs/distributed.md);
+/// `argus worker` publishes it, tests spawn it in-process. `name` is how it introduces itself;
+/// `render_threads` the renderers it makes for pixel sensing.
+///
+/// One run at a time. In the order a coordinator sends them:
+/// - `(worker_hello_atom, std::string version)` -> `(std::string version, std::string name)`, or
+///   an error naming both versions when they differ;
+/// - `(worker_setup_atom, worker_setup)` -> `std::vector<caf::actor>`: it reads the scenario and
+///   the station from the setup's text, makes what its cameras sense with (the station, a
+///   snapshot board, renderers when sensing is pixels, the instruments with an observation log
+///   of its own) and spawns the setup's links; answers their handles in the setup's order;
+/// - `(spawn_cameras_atom, std::vector<camera_placement>)` -> `std::vector<caf::actor>`: spawns
+///   those camera nodes attached to their links (also for a camera that recovers from a crash);
+/// - every tick, in phase network, `(gather_atom)` -> `std::vector<eval::task_origin>`: the
+///   picks its cameras made since it was last asked, by task; then `(board_atom, wire_snapshot,
+///   std::vector<eval::task_origin> picks)` -> `done_atom`: the picks of every worker join its
+///   log, and the world's new snapshot its board, before its cameras' turns;
+/// - `(take_log_atom)` -> `eval::observation_log::contents`: what its cameras recorded;
+/// - `(release_atom)` -> `done_atom`: ends what it hosted and waits for the next run.
+caf::actor spawn_worker_host(caf::actor_system& system, std::string name,
+                             std::size_t render_threads);
+
+}  // namespace argus::actors

@@ -1,0 +1,71 @@
+#pragma once
+
+// What a coordinator and its workers say to each other (docs/distributed.md). Every type has
+// a CAF inspector and a type ID (actors/type_ids.hpp), so the middleman carries them.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "caf/actor.hpp"
+
+namespace argus::actors {
+
+/// A link a worker hosts: its index in the scenario's topology and its two cameras.
+struct link_placement {
+  std::uint64_t index = 0;
+  int a = 0;
+  int b = 0;
+};
+
+template <class Inspector>
+typename Inspector::result_type inspect(Inspector& f, link_placement& x) {
+  return f(x.index, x.a, x.b);
+}
+
+/// What a worker needs to host its part of a run: the effective scenario (config::to_yaml),
+/// the files it names (a worker may be on a machine without them), and the links it spawns.
+struct worker_setup {
+  std::string scenario_yaml;
+  /// The station layout file's text.
+  std::string layout_text;
+  /// The emulated sensor's model file's text; empty for none.
+  std::string sensor_model_text;
+  /// Whether frames record everyone visible (`--mot`).
+  bool with_visible = false;
+  std::vector<link_placement> links;
+  /// An actor that lives as long as the coordinator's run: when it goes (the run ended, the
+  /// coordinator died or its connection broke), the worker ends what it hosted.
+  caf::actor coordinator;
+};
+
+template <class Inspector>
+typename Inspector::result_type inspect(Inspector& f, worker_setup& x) {
+  return f(x.scenario_yaml, x.layout_text, x.sensor_model_text, x.with_visible, x.links,
+           x.coordinator);
+}
+
+/// One of a camera's links, as the camera node is attached to it (attached_link).
+struct neighbour_link {
+  int neighbour = 0;
+  std::uint64_t participant = 0;
+  caf::actor handle;
+};
+
+template <class Inspector>
+typename Inspector::result_type inspect(Inspector& f, neighbour_link& x) {
+  return f(x.neighbour, x.participant, x.handle);
+}
+
+/// A camera node a worker spawns, with its links (wherever they run).
+struct camera_placement {
+  int camera = 0;
+  std::vector<neighbour_link> links;
+};
+
+template <class Inspector>
+typename Inspector::result_type inspect(Inspector& f, camera_placement& x) {
+  return f(x.camera, x.links);
+}
+
+}  // namespace argus::actors

@@ -1,0 +1,80 @@
+#!/usr/bin/env bash
+# What a distributed run costs against one process on the same machine (issue 51): each
+# scenario below run in one process and with 2 and 4 `argus worker` processes on loopback, in
+# turn (one process, 2 workers, 4 workers, again ...), ROUNDS times; prints each variant's median
+# wall seconds of the whole `argus run` and its ratio to one process, paired round by round, and
+# checks that every run wrote the one-process events.jsonl.
+#   bench/distributed_overhead.sh [ARGUS] [ROUNDS]
+# Then the per-tick cost of the cross-process barrier: minimal.yaml (emulated, three cameras,
+# nearly nothing to compute) in one process and with one worker, 1,800 ticks.
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+argus="${1:-$root/build/apps/argus}"
+rounds="${2:-3}"
+out="$(mktemp -d)"
+pids=()
+trap 'for p in "${pids[@]}"; do kill "$p" 2>/dev/null; done; rm -rf "$out"' EXIT
+
+workers=()
+for i in 1 2 3 4; do
+  "$argus" worker --listen 127.0.0.1:0 >"$out/worker-$i.log" 2>&1 &
+  pids+=($!)
+  for _ in $(seq 100); do grep -q "listening on" "$out/worker-$i.log" && break; sleep 0.1; done
+  workers+=("$(sed -n 's/^argus worker: listening on //p' "$out/worker-$i.log")")
+done
+two="${workers[0]},${workers[1]}"
+four="${workers[0]},${workers[1]},${workers[2]},${workers[3]}"
+
+timed() {  # timed FILE COMMAND...: appends the wall seconds of COMMAND to FILE
+  local start end
+  start=$(date +%s.%N)
+  "$@" >/dev/null 2>"$out/last.err" || { cat "$out/last.err" >&2; exit 1; }
+  end=$(date +%s.%N)
+  python3 -c "print($end - $start)" >>"$1"
+}
+
+compare() {  # compare NAME SCENARIO DURATION [run options]
+  local name=$1 scenario=$2 duration=$3
+  shift 3
+  local run=("$argus" run "$root/scenarios/$scenario" --seed 1 --duration "$duration" --no-feeds
+             --no-progress "$@")
+  for r in $(seq "$rounds"); do
+    timed "$out/$name-1" "${run[@]}" --set run.output_dir="$out/$name-run-1"
+    timed "$out/$name-2" "${run[@]}" --set run.output_dir="$out/$name-run-2" --workers "$two"
+    timed "$out/$name-4" "${run[@]}" --set run.output_dir="$out/$name-run-4" --workers "$four"
+    for n in 2 4; do
+      cmp -s "$out/$name-run-1/events.jsonl" "$out/$name-run-$n/events.jsonl" ||
+        { echo "$name: $n workers wrote another events.jsonl" >&2; exit 1; }
+    done
+  done
+  python3 - "$name" "$duration" "$out/$name-1" "$out/$name-2" "$out/$name-4" <<'PY'
+import statistics, sys
+name, duration = sys.argv[1], sys.argv[2]
+one, two, four = ([float(x) for x in open(f)] for f in sys.argv[3:6])
+med = statistics.median
+print(f"{name} ({duration}): one process {med(one):.2f} s; "
+      f"2 workers {med(two):.2f} s ({med(b / a for a, b in zip(one, two)):.2f}x); "
+      f"4 workers {med(four):.2f} s ({med(b / a for a, b in zip(one, four)):.2f}x); "
+      f"{len(one)} rounds, ratios paired by round")
+PY
+}
+
+compare "large station, emulated" large_station.yaml "20 s"
+compare "Penn Station, pixels" penn_station.yaml "60 s"
+
+# The barrier: the same near-empty run in one process and with one worker.
+for r in $(seq "$rounds"); do
+  timed "$out/bare-1" "$argus" run "$root/scenarios/minimal.yaml" --duration "120 s" --no-feeds \
+    --no-progress --set sensing.mode=emulated --set run.output_dir="$out/bare-run-1"
+  timed "$out/bare-w" "$argus" run "$root/scenarios/minimal.yaml" --duration "120 s" --no-feeds \
+    --no-progress --set sensing.mode=emulated --set run.output_dir="$out/bare-run-w" \
+    --workers "${workers[0]}"
+done
+python3 - "$out/bare-1" "$out/bare-w" <<'PY'
+import statistics, sys
+one, one_worker = ([float(x) for x in open(f)] for f in sys.argv[1:3])
+ticks = 1800
+per_tick = statistics.median((b - a) / ticks for a, b in zip(one, one_worker))
+print(f"barrier: minimal.yaml, {ticks} ticks: one process {statistics.median(one):.2f} s, "
+      f"one worker {statistics.median(one_worker):.2f} s: {per_tick * 1e6:.0f} us more a tick")
+PY

@@ -1,0 +1,194 @@
+// A distributed run's protocol in one process (docs/distributed.md): worker hosts spawned in the
+// run's own actor system stand in for `argus worker`, so the placement, the hand-over of the
+// world and the picks, the remote spawns and recoveries and the logs' return are checked here,
+// under the sanitizers too; tests/apps/distributed_loopback.cmake runs the same over the
+// middleman between processes.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <map>
+#include <regex>
+#include <set>
+#include <string>
+
+#include "actors/remote_network.hpp"
+#include "actors/run_scenario.hpp"
+#include "actors/system_config.hpp"
+#include "actors/type_ids.hpp"
+#include "actors/worker_host.hpp"
+#include "actors/worker_pool.hpp"
+#include "caf/binary_deserializer.hpp"
+#include "caf/binary_serializer.hpp"
+#include "config/scenario_loader.hpp"
+#include "tests/actors/file_text.hpp"
+#include "world/crowd.hpp"
+#include "world/layout_loader.hpp"
+
+namespace argus::actors::testing {
+namespace {
+
+// Worker hosts in the run's own actor system, one per name.
+class local_workers final : public worker_pool {
+ public:
+  explicit local_workers(std::size_t count) : count_(count) {}
+  void configure(caf::actor_system_config&) const override {}
+  std::vector<worker_contact> connect(caf::actor_system& system) const override {
+    std::vector<worker_contact> out;
+    for (std::size_t i = 0; i < count_; ++i) {
+      auto name = "local-" + std::to_string(i + 1);
+      out.push_back({name, spawn_worker_host(system, name, 1)});
+    }
+    return out;
+  }
+
+ private:
+  std::size_t count_;
+};
+
+// replay_faults.yaml's first 36 s (two tasks, crashes and three recoveries, cuts, loss bursts),
+// with the shipped emulated sensor: pixels cross processes in tests/apps/distributed_loopback.sh,
+// and here the sanitizers must finish too.
+config::scenario replay_faults(const std::filesystem::path& out) {
+  const auto scenarios = std::filesystem::path(ARGUS_SOURCE_DIR) / "scenarios";
+  auto s = config::load_scenario(scenarios / "replay_faults.yaml");
+  s.sensing.mode = config::sensing_mode::emulated;
+  s.sensing.sensor_model = (scenarios / "sensor_model.yaml").string();
+  s.run.seed = 12;  // a group forms and hands over in these 36 s
+  s.run.duration = config::seconds{36.0};
+  s.run.threads = 2;
+  s.run.output_dir = out.string();
+  return s;
+}
+
+// The files a distributed run must write as one process does; metrics.json without its wall
+// time, which no two runs share.
+std::string outputs(const std::filesystem::path& dir) {
+  auto metrics =
+      std::regex_replace(file_text(dir / "metrics.json"),
+                         std::regex(R"re(\s*"(wall_seconds|speed_ratio)": [^,\n]*,?)re"), "");
+  return file_text(dir / "events.jsonl") + "\n--\n" + file_text(dir / "trajectories.csv") +
+         "\n--\n" + file_text(dir / "poses.csv") + "\n--\n" + file_text(dir / "tracks.csv") +
+         "\n--\n" + metrics;
+}
+
+std::filesystem::path scratch(const std::string& tag) {
+  auto dir = std::filesystem::temp_directory_path() /
+             ("argus-distributed-" + std::to_string(::getpid()) + "-" + tag);
+  std::filesystem::remove_all(dir);
+  return dir;
+}
+
+TEST(distributed, one_two_and_three_workers_write_what_one_process_writes) {
+  const auto alone_dir = scratch("alone");
+  run_scenario(replay_faults(alone_dir), run_options{});
+  const auto alone = outputs(alone_dir);
+  // The run has what must survive the split: crashes, a recovery, a task and its group.
+  const auto events = file_text(alone_dir / "events.jsonl");
+  ASSERT_NE(events.find("\"kind\":\"node_recovered\""), std::string::npos);
+  ASSERT_NE(events.find("\"kind\":\"joined\""), std::string::npos);
+  ASSERT_NE(events.find("\"kind\":\"handoff\""), std::string::npos);
+  const std::vector<std::pair<std::size_t, config::placement_policy>> splits{
+      {1, config::placement_policy::region},
+      {2, config::placement_policy::region},
+      {3, config::placement_policy::region},
+      {3, config::placement_policy::id}};
+  for (const auto& [n, how] : splits) {
+    const auto dir = scratch("w" + std::to_string(n));
+    run_options options;
+    options.workers = std::make_shared<local_workers>(n);
+    auto s = replay_faults(dir);
+    s.placement.policy = how;
+    auto outcome = run_scenario(s, options);
+    EXPECT_TRUE(outcome.result.failure.empty()) << outcome.result.failure;
+    EXPECT_EQ(outputs(dir), alone) << n << " workers, placement " << static_cast<int>(how);
+    std::filesystem::remove_all(dir);
+  }
+  std::filesystem::remove_all(alone_dir);
+}
+
+TEST(distributed, what_one_process_cannot_share_is_refused_before_the_run) {
+  auto s = replay_faults(scratch("refused"));
+  s.sensing.geometry = config::group_geometry::ground_truth;
+  run_options options;
+  options.workers = std::make_shared<local_workers>(2);
+  try {
+    run_scenario(s, options);
+    FAIL() << "a shared board across workers was accepted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("sensing.group_geometry"), std::string::npos) << e.what();
+  }
+}
+
+TEST(distributed, placement_gives_every_worker_a_run_of_neighbours) {
+  auto s = replay_faults(scratch("placement"));
+  for (std::size_t n = 1; n <= s.cameras.size(); ++n)
+    for (auto how : {config::placement_policy::region, config::placement_policy::id}) {
+      s.placement.policy = how;
+      auto where = place_cameras(s, n);
+      ASSERT_EQ(where.size(), s.cameras.size());
+      std::map<std::size_t, std::size_t> load;
+      for (const auto& [camera, worker] : where) ++load[worker];
+      ASSERT_EQ(load.size(), n) << "a worker without cameras";
+      for (const auto& [worker, count] : load) {
+        EXPECT_GE(count, s.cameras.size() / n);
+        EXPECT_LE(count, s.cameras.size() / n + 1);
+      }
+    }
+  // By id: consecutive ids together.
+  s.placement.policy = config::placement_policy::id;
+  auto by_id = place_cameras(s, 2);
+  std::vector<int> ids;
+  for (const auto& c : s.cameras) ids.push_back(c.id);
+  std::sort(ids.begin(), ids.end());
+  EXPECT_EQ(by_id.at(ids.front()), 0u);
+  EXPECT_EQ(by_id.at(ids.back()), 1u);
+  EXPECT_THROW(place_cameras(s, s.cameras.size() + 1), std::invalid_argument);
+}
+
+TEST(distributed, a_snapshot_crosses_the_wire_to_the_same_world) {
+  auto s = replay_faults(scratch("wire"));
+  auto station = world::station::load(world::layout_path(s));
+  world::crowd crowd(station, world::crowd_settings::from(s));
+  for (int i = 0; i < 60; ++i) crowd.step();
+  const auto& before = *crowd.current();
+  ASSERT_GT(before.pedestrians().size(), 10u);
+  system_config cfg(1);
+  caf::actor_system system{cfg};
+  std::vector<char> bytes;
+  caf::binary_serializer sink{system, bytes};
+  auto wire = to_wire(before);
+  ASSERT_FALSE(sink(wire));
+  wire_snapshot back;
+  caf::binary_deserializer source{system, bytes};
+  ASSERT_FALSE(source(back));
+  auto after = from_wire(*station, std::move(back));
+  EXPECT_EQ(after->tick(), before.tick());
+  EXPECT_EQ(after->time(), before.time());
+  ASSERT_EQ(after->pedestrians().size(), before.pedestrians().size());
+  for (std::size_t i = 0; i < before.pedestrians().size(); ++i)
+    EXPECT_TRUE(after->pedestrians()[i] == before.pedestrians()[i]) << "pedestrian " << i;
+  ASSERT_EQ(after->events().size(), before.events().size());
+  for (std::size_t i = 0; i < before.events().size(); ++i)
+    EXPECT_TRUE(after->events()[i] == before.events()[i]);
+}
+
+TEST(distributed, a_worker_of_another_version_is_refused_naming_both) {
+  system_config cfg(1);
+  caf::actor_system system{cfg};
+  auto host = spawn_worker_host(system, "w-old", 1);
+  caf::scoped_actor self{system};
+  std::string refusal;
+  self->request(host, std::chrono::seconds(5), worker_hello_atom_v, std::string("0.0.1"))
+      .receive([&](std::string&, std::string&) {},
+               [&](caf::error& err) { refusal = system.render(err); });
+  EXPECT_NE(refusal.find("w-old"), std::string::npos) << refusal;
+  EXPECT_NE(refusal.find("0.0.1"), std::string::npos) << refusal;
+  EXPECT_NE(refusal.find(argus_version()), std::string::npos) << refusal;
+  EXPECT_NO_THROW(greet_workers(system, {{"w-same", host}}, std::chrono::seconds(5)));
+  caf::anon_send_exit(host, caf::exit_reason::user_shutdown);
+}
+
+}  // namespace
+}  // namespace argus::actors::testing

@@ -1,0 +1,125 @@
+#!/bin/bash
+# One run across processes on loopback (docs/distributed.md): `argus worker` processes host the
+# cameras and links of `argus run --workers`, over CAF's middleman.
+#   distributed_loopback.sh ARGUS SOURCE_DIR OUT
+# - replay_faults.yaml (pixels, every fault kind) with 1, 2 and 3 workers writes the same
+#   events.jsonl, trajectories.csv, poses.csv, tracks.csv and metrics.json (less its wall time)
+#   as one process;
+# - a worker killed mid-run: the coordinator ends within 5 s with exit 1, naming the worker and
+#   the last whole tick, and every line of events.jsonl is whole;
+# - a worker that never answers, or no worker at all, is reported by name;
+# - a worker asked to listen beyond loopback without TLS refuses.
+set -u
+ARGUS=$1
+SOURCE=$2
+OUT=$3
+rm -rf "$OUT"
+mkdir -p "$OUT"
+pids=()
+cleanup() { for p in "${pids[@]}"; do kill -9 "$p" 2>/dev/null; done; }
+trap cleanup EXIT
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+# Starts a worker on a port of the system's choosing; sets $port and $pid.
+start_worker() {
+  local log=$OUT/worker-$1.log
+  "$ARGUS" worker --listen 127.0.0.1:0 --threads 1 >"$log" 2>&1 &
+  pid=$!
+  pids+=("$pid")
+  for _ in $(seq 100); do
+    port=$(sed -n 's/^argus worker: listening on 127.0.0.1:\([0-9]*\)$/\1/p' "$log")
+    [ -n "$port" ] && return 0
+    kill -0 "$pid" 2>/dev/null || fail "worker $1 exited: $(cat "$log")"
+    sleep 0.1
+  done
+  fail "worker $1 did not listen within 10 s"
+}
+
+# The outputs a distributed run must share with one process.
+same_outputs() {
+  local a=$1 b=$2
+  for f in events.jsonl trajectories.csv pedestrians.csv poses.csv tracks.csv targets.csv; do
+    cmp -s "$a/$f" "$b/$f" || fail "$b/$f differs from $a/$f"
+  done
+  local strip='/"wall_seconds"\|"speed_ratio"/d'
+  diff <(sed "$strip" "$a/metrics.json") <(sed "$strip" "$b/metrics.json") >/dev/null ||
+    fail "$b/metrics.json differs from $a/metrics.json beyond the wall time"
+}
+
+run() { "$ARGUS" run "$SOURCE/scenarios/replay_faults.yaml" --seed 5 --duration "30 s" --no-feeds \
+  --no-progress --set run.threads=2 "$@"; }
+
+run --set run.output_dir="$OUT/alone" >"$OUT/alone.txt" 2>&1 || fail "the one-process run: $(tail -3 "$OUT/alone.txt")"
+grep -q '"kind":"node_recovered"' "$OUT/alone/events.jsonl" || fail "no recovery in the reference run"
+grep -q '"kind":"handoff"' "$OUT/alone/events.jsonl" || fail "no hand-over in the reference run"
+
+ports=()
+for i in 1 2 3; do start_worker "$i"; ports+=("127.0.0.1:$port"); done
+list=""
+for n in 1 2 3; do
+  list=${list:+$list,}${ports[$((n - 1))]}
+  run --set run.output_dir="$OUT/w$n" --workers "$list" >"$OUT/w$n.txt" 2>&1 ||
+    fail "$n workers: $(tail -3 "$OUT/w$n.txt")"
+  same_outputs "$OUT/alone" "$OUT/w$n"
+  echo "$n workers: the same outputs as one process"
+done
+# The same workers serve the next run: by id this time.
+run --set run.output_dir="$OUT/by-id" --workers "$list" --set placement.policy=id >"$OUT/by-id.txt" 2>&1 ||
+  fail "placement id: $(tail -3 "$OUT/by-id.txt")"
+same_outputs "$OUT/alone" "$OUT/by-id"
+echo "3 workers placed by id: the same outputs as one process"
+
+# A worker killed mid-run.
+"$ARGUS" run "$SOURCE/scenarios/penn_station_emulated.yaml" --seed 5 --no-feeds --no-progress \
+  --set run.output_dir="$OUT/killed" --workers "${ports[0]},${ports[1]}" >"$OUT/killed.txt" 2>&1 &
+coordinator=$!
+pids+=("$coordinator")
+for _ in $(seq 300); do
+  [ -s "$OUT/killed/events.jsonl.partial" ] || [ -s "$OUT/killed/events.jsonl" ] && break
+  sleep 0.1
+done
+sleep 1
+victim=${pids[1]}
+kill -9 "$victim"
+killed_at=$(date +%s.%N)
+wait "$coordinator"
+rc=$?
+ended_at=$(date +%s.%N)
+[ $rc -eq 1 ] || fail "a lost worker: exit $rc, expected 1: $(tail -3 "$OUT/killed.txt")"
+took=$(python3 -c "print(round($ended_at - $killed_at, 2))")
+python3 -c "import sys; sys.exit(0 if $took < 5 else 1)" || fail "the coordinator took $took s to end after the kill"
+grep -q "worker ${ports[1]} was lost during tick [0-9]*.*complete up to tick [0-9]*" "$OUT/killed.txt" ||
+  fail "no message naming the lost worker: $(tail -3 "$OUT/killed.txt")"
+last=$(sed -n 's/.*complete up to tick \([0-9]*\).*/\1/p' "$OUT/killed.txt" | tail -1)
+events=$OUT/killed/events.jsonl
+[ -f "$events" ] || fail "no events.jsonl after the loss"
+python3 - "$events" "$last" <<'PY' || fail "events.jsonl after the loss is not whole"
+import json, sys
+ticks = [json.loads(line)["tick"] for line in open(sys.argv[1])]
+assert ticks and max(ticks) <= int(sys.argv[2]), (max(ticks), sys.argv[2])
+PY
+for f in trajectories.csv pedestrians.csv; do
+  [ -f "$OUT/killed/$f" ] || fail "no $f after the loss"
+  [ -z "$(tail -c 1 "$OUT/killed/$f")" ] || fail "$f ends in half a line"
+done
+echo "a worker killed: exit 1 after $took s, outputs whole up to tick $last"
+
+# A worker that accepts the connection and never answers, and a port with no worker.
+python3 -c '
+import socket, sys, time
+s = socket.socket(); s.bind(("127.0.0.1", 0)); s.listen(4)
+print(s.getsockname()[1], flush=True); time.sleep(60)' >"$OUT/mute.port" &
+pids+=($!)
+for _ in $(seq 50); do [ -s "$OUT/mute.port" ] && break; sleep 0.1; done
+mute=127.0.0.1:$(cat "$OUT/mute.port")
+start=$(date +%s)
+run --set run.output_dir="$OUT/mute" --workers "$mute" >"$OUT/mute.txt" 2>&1
+rc=$?
+[ $rc -ne 0 ] || fail "a mute worker was accepted"
+grep -q "worker $mute" "$OUT/mute.txt" || fail "the mute worker is not named: $(cat "$OUT/mute.txt")"
+[ $(( $(date +%s) - start )) -le 30 ] || fail "the mute worker took over 30 s to report"
+echo "a mute worker: $(grep -o "worker $mute.*" "$OUT/mute.txt" | head -1)"
+
+"$ARGUS" worker --listen 0.0.0.0:0 >"$OUT/open.txt" 2>&1 && fail "a worker listened beyond loopback without TLS"
+grep -q "TLS" "$OUT/open.txt" || fail "no reason given: $(cat "$OUT/open.txt")"
+echo "beyond loopback without TLS: refused"
