@@ -133,7 +133,7 @@ void finish_workers(caf::actor_system& system, const std::vector<worker_contact>
     self->monitor(w.host);
     bool lost = false;
     self->receive([&](caf::down_msg&) { lost = true; },
-                  caf::after(std::chrono::milliseconds(50)) >> [] {});
+                  caf::after(std::chrono::seconds(0)) >> [] {});
     if (lost) {
       spdlog::warn("worker {} is gone: its cameras' frames are not in the evaluation", w.name);
       continue;

@@ -26,16 +26,17 @@ two="${workers[0]},${workers[1]}"
 four="${workers[0]},${workers[1]},${workers[2]},${workers[3]}"
 
 timed() {  # timed FILE COMMAND...: appends the wall seconds of COMMAND to FILE
-  local start end
+  local file=$1 start end
+  shift
   start=$(date +%s.%N)
   "$@" >/dev/null 2>"$out/last.err" || { cat "$out/last.err" >&2; exit 1; }
   end=$(date +%s.%N)
-  python3 -c "print($end - $start)" >>"$1"
+  python3 -c "print($end - $start)" >>"$file"
 }
 
-compare() {  # compare NAME SCENARIO DURATION [run options]
-  local name=$1 scenario=$2 duration=$3
-  shift 3
+compare() {  # compare NAME LABEL SCENARIO DURATION [run options]
+  local name=$1 label=$2 scenario=$3 duration=$4
+  shift 4
   local run=("$argus" run "$root/scenarios/$scenario" --seed 1 --duration "$duration" --no-feeds
              --no-progress "$@")
   for r in $(seq "$rounds"); do
@@ -47,7 +48,7 @@ compare() {  # compare NAME SCENARIO DURATION [run options]
         { echo "$name: $n workers wrote another events.jsonl" >&2; exit 1; }
     done
   done
-  python3 - "$name" "$duration" "$out/$name-1" "$out/$name-2" "$out/$name-4" <<'PY'
+  python3 - "$label" "$duration" "$out/$name-1" "$out/$name-2" "$out/$name-4" <<'PY'
 import statistics, sys
 name, duration = sys.argv[1], sys.argv[2]
 one, two, four = ([float(x) for x in open(f)] for f in sys.argv[3:6])
@@ -59,8 +60,8 @@ print(f"{name} ({duration}): one process {med(one):.2f} s; "
 PY
 }
 
-compare "large station, emulated" large_station.yaml "20 s"
-compare "Penn Station, pixels" penn_station.yaml "60 s"
+compare large "large station, emulated" large_station.yaml "20 s"
+compare penn "Penn Station, pixels" penn_station.yaml "60 s"
 
 # The barrier: the same near-empty run in one process and with one worker.
 for r in $(seq "$rounds"); do
