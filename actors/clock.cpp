@@ -4,6 +4,7 @@
 #include <array>
 #include <map>
 #include <set>
+#include <string>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -59,6 +60,7 @@ class clock_actor : public caf::event_based_actor {
         progress_(std::move(progress)) {}
 
   caf::behavior make_behavior() override {
+    for (const auto& [host, sub] : settings_.sub_clocks) batches_[host];
     set_down_handler([this](caf::down_msg& msg) { on_down(msg); });
     monitor(recorder_);
     return {
@@ -80,6 +82,9 @@ class clock_actor : public caf::event_based_actor {
           return promise_;
         },
         [this](tick_ack& ack) { on_ack(ack); },
+        [this](std::vector<tick_ack>& acks) {
+          for (auto& ack : acks) on_ack(ack);
+        },
         [this](advance_atom) {
           if (settings_.pacing && !live_tick_due()) return;
           begin_tick();
@@ -162,9 +167,21 @@ class clock_actor : public caf::event_based_actor {
       apply_joins();  // joins sent from inside a tick precede their sender's ack
       collect_due();
       if (awaiting_ > 0) {
+        const auto p = static_cast<std::uint8_t>(phase_);
         for (auto* e : due_) {
-          send(e->handle, tick_atom_v, tick_, static_cast<std::uint8_t>(phase_), e->relayed);
+          if (!e->info.host.empty())
+            if (auto sub = batches_.find(e->info.host); sub != batches_.end()) {
+              sub->second.push_back({e->info.id, e->relayed});
+              e->relayed = 0;
+              continue;
+            }
+          send(e->handle, tick_atom_v, tick_, p, e->relayed);
           e->relayed = 0;
+        }
+        for (auto& [host, batch] : batches_) {
+          if (batch.empty()) continue;
+          send(settings_.sub_clocks.at(host), tick_atom_v, tick_, p, std::move(batch));
+          batch.clear();
         }
         return;
       }
@@ -527,6 +544,8 @@ class clock_actor : public caf::event_based_actor {
   std::int64_t tick_ = 0;
   std::size_t phase_ = 0;
   std::vector<entry*> due_;
+  // This phase's ticks for each sub-clock (clock_settings::sub_clocks), by host.
+  std::map<std::string, std::vector<batched_tick>> batches_;
   std::vector<std::uint64_t> due_ids_;
   std::size_t awaiting_ = 0;
   std::vector<sim_event> batch_;

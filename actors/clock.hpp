@@ -3,10 +3,13 @@
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
+#include <map>
 #include <memory>
+#include <string>
 
 #include "actors/pacing.hpp"
 #include "actors/scheduling_order.hpp"
+#include "caf/actor.hpp"
 #include "caf/fwd.hpp"
 
 namespace argus::actors {
@@ -29,6 +32,11 @@ struct clock_settings {
   /// Runs the clock on a thread of its own rather than on the scheduler's workers
   /// (clock_on_own_thread() says when that pays).
   bool own_thread = false;
+  /// Sub-clocks by host (participant_info::host): a distributed run's worker hosts. The
+  /// participants of a host are ticked through it, one `(tick_atom, int64 tick, uint8 phase,
+  /// std::vector<batched_tick>)` a phase, and answer with one `std::vector<tick_ack>`: a tick
+  /// costs two messages across the network per worker, not two per camera.
+  std::map<std::string, caf::actor> sub_clocks;
 };
 
 /// Whether a run with `threads` scheduler workers in `order` and `participants` participants

@@ -241,6 +241,8 @@ run_outcome run_scenario(const config::scenario& scenario, const run_options& op
   const protocol::topology topo(scenario);
   // Links are never ticked: the clock's round trips are the cameras'.
   cs.own_thread = clock_on_own_thread(threads, scenario.cameras.size());
+  // Each worker ticks its own cameras and answers for them at once.
+  for (const auto& w : workers) cs.sub_clocks[w.name] = w.host;
   auto clock = spawn_clock(system, cs, recorder, progress);
 
   // Joins and link attachments go out from this thread, in this order, before `start`:

@@ -40,4 +40,17 @@ typename Inspector::result_type inspect(Inspector& f, tick_ack& x) {
   return f(x.participant, x.tick, x.next_wakeup, x.woken, x.relayed, x.events, x.stop_run);
 }
 
+/// One participant's tick in a batch the clock sends a sub-clock (a distributed run's worker
+/// host, which ticks the participants it hosts and answers with all their acks at once): who,
+/// and the hand-overs announced to it (the `relayed` of a single tick).
+struct batched_tick {
+  std::uint64_t participant = 0;
+  std::uint32_t relayed = 0;
+};
+
+template <class Inspector>
+typename Inspector::result_type inspect(Inspector& f, batched_tick& x) {
+  return f(x.participant, x.relayed);
+}
+
 }  // namespace argus::actors

@@ -3,15 +3,18 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <mutex>
 #include <optional>
 #include <random>
+#include <set>
 #include <utility>
 #include <vector>
 
 #include "actors/camera_node.hpp"
 #include "actors/camera_world_setup.hpp"
 #include "actors/link.hpp"
+#include "actors/participant_ids.hpp"
 #include "actors/run_observer.hpp"
 #include "actors/type_ids.hpp"
 #include "config/scenario_loader.hpp"
@@ -76,6 +79,13 @@ class setup_files {
   std::filesystem::path dir_;
 };
 
+// The phase's ticks the clock handed this worker as its sub-clock: the acks awaited, and those in.
+struct tick_batch {
+  caf::actor clock;
+  std::set<std::uint64_t> waiting;
+  std::vector<tick_ack> acks;
+};
+
 struct hosted_run {
   config::scenario scenario;
   std::unique_ptr<setup_files> files;
@@ -83,6 +93,11 @@ struct hosted_run {
   std::shared_ptr<pick_outbox> picks;
   std::shared_ptr<camera_world> world;
   std::vector<caf::actor> spawned;
+  caf::actor coordinator;
+  // Its camera nodes as the clock knows them, by participant id and by address.
+  std::map<std::uint64_t, caf::actor> participants;
+  std::map<caf::actor_addr, std::uint64_t> participant_of;
+  tick_batch batch;
 };
 
 struct worker_host_state {
@@ -112,7 +127,12 @@ caf::result<std::vector<caf::actor>> set_up(host_actor* self, worker_setup& setu
     run.files = std::make_unique<setup_files>();
     run.scenario = config::parse_scenario(setup.scenario_yaml, "the coordinator's scenario");
     controller::resolve_strategy(run.scenario);
-    auto station = world::station::load(run.files->write("layout.yaml", setup.layout_text));
+    // Cameras only look at the station: no walker here needs its distance fields, which are
+    // most of a large station's loading time (the coordinator has checked the layout).
+    world::navigation_settings looked_at;
+    looked_at.fields = false;
+    auto station =
+        world::station::load(run.files->write("layout.yaml", setup.layout_text), looked_at);
     vision::sensor_model model;
     if (!setup.sensor_model_text.empty())
       model = vision::load_sensor_model(
@@ -130,6 +150,7 @@ caf::result<std::vector<caf::actor>> set_up(host_actor* self, worker_setup& setu
       run.spawned.push_back(links.back());
     }
     if (setup.coordinator) self->monitor(setup.coordinator);
+    run.coordinator = setup.coordinator;
     st.run = std::move(run);
     spdlog::info("worker {}: hosting '{}' ({} links)", st.name, st.run->scenario.name,
                  links.size());
@@ -155,17 +176,72 @@ caf::result<std::vector<caf::actor>> spawn_cameras(host_actor* self,
     auto node =
         spawn_camera_node(self->system(), st.run->scenario, *it, std::move(links), st.run->world);
     st.run->spawned.push_back(node);
+    // Ticked through this host (the clock's sub-clock); watched, so a camera that dies is not
+    // waited for.
+    const auto id = participant_ids::camera(c.camera);
+    st.run->participants[id] = node;
+    st.run->participant_of[node.address()] = id;
+    self->monitor(node);
     out.push_back(std::move(node));
   }
   return out;
 }
 
+// Answers the clock once every camera of the batch has acknowledged (or died).
+void answer_batch(host_actor* self) {
+  auto& batch = self->state.run->batch;
+  if (!batch.waiting.empty() || !batch.clock) return;
+  self->send(batch.clock, std::move(batch.acks));
+  batch.acks.clear();
+  batch.clock = caf::actor{};
+}
+
+void tick_batch_of(host_actor* self, std::int64_t tick, std::uint8_t phase,
+                   const std::vector<batched_tick>& due) {
+  auto& run = *self->state.run;
+  auto& batch = run.batch;
+  batch.clock = caf::actor_cast<caf::actor>(self->current_sender());
+  for (const auto& d : due) {
+    auto it = run.participants.find(d.participant);
+    if (it == run.participants.end()) continue;  // gone: the clock watches it too
+    batch.waiting.insert(d.participant);
+    self->send(it->second, tick_atom_v, tick, phase, d.relayed);
+  }
+  answer_batch(self);
+}
+
+void on_down(host_actor* self, const caf::down_msg& msg) {
+  auto& st = self->state;
+  if (!st.run) return;
+  // A coordinator that goes away leaves nothing behind: what it spawned here ends with it.
+  if (msg.source == st.run->coordinator.address()) {
+    end_run(self);
+    return;
+  }
+  auto it = st.run->participant_of.find(msg.source);
+  if (it == st.run->participant_of.end()) return;
+  st.run->participants.erase(it->second);
+  st.run->batch.waiting.erase(it->second);
+  st.run->participant_of.erase(it);
+  answer_batch(self);
+}
+
 caf::behavior worker_host(host_actor* self, std::string name, std::size_t render_threads) {
   self->state.name = std::move(name);
   self->state.render_threads = render_threads;
-  // A coordinator that goes away leaves nothing behind: what it spawned here ends with it.
-  self->set_down_handler([self](caf::down_msg&) { end_run(self); });
+  self->set_down_handler([self](caf::down_msg& msg) { on_down(self, msg); });
   return {
+      [self](tick_atom, std::int64_t tick, std::uint8_t phase, std::vector<batched_tick>& due) {
+        if (self->state.run) tick_batch_of(self, tick, phase, due);
+      },
+      [self](tick_ack& ack) {
+        auto& st = self->state;
+        if (!st.run) return;
+        auto& batch = st.run->batch;
+        if (batch.waiting.erase(ack.participant) == 0) return;  // not of this phase: stray
+        batch.acks.push_back(std::move(ack));
+        answer_batch(self);
+      },
       [self](worker_hello_atom,
              const std::string& version) -> caf::result<std::string, std::string> {
         if (version != argus_version())

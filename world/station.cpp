@@ -92,11 +92,12 @@ station::station(layout plan, navigation_settings settings)
   build_segments();
   build_segment_index();
   build_grid();
-  build_fields();
+  if (settings_.fields) build_fields();
 }
 
-std::shared_ptr<const station> station::load(const std::filesystem::path& file) {
-  return std::make_shared<const station>(load_layout(file));
+std::shared_ptr<const station> station::load(const std::filesystem::path& file,
+                                             navigation_settings settings) {
+  return std::make_shared<const station>(load_layout(file), settings);
 }
 
 void station::build_segments() {

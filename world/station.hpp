@@ -40,6 +40,11 @@ struct navigation_settings {
   /// routes keep off walls.
   double wall_penalty = 0.6;
   double wall_band_m = 0.8;
+  /// Whether to compute the distance fields (and check reachability with them). Off for a
+  /// station that is only looked at — rendered, or seen through for visibility — as a
+  /// distributed run's workers do (docs/distributed.md): then no walker may use it, and
+  /// target(), distance_to() and direction_to() must not be called.
+  bool fields = true;
 };
 
 /// The immutable station: its layout plus everything derived from it once, shared by every
@@ -63,7 +68,8 @@ class station {
   explicit station(layout plan, navigation_settings settings = {});
 
   /// load_layout + construct, shared for the partitions.
-  static std::shared_ptr<const station> load(const std::filesystem::path& file);
+  static std::shared_ptr<const station> load(const std::filesystem::path& file,
+                                             navigation_settings settings = {});
 
   /// The layout this station was built from.
   const layout& plan() const noexcept { return plan_; }
