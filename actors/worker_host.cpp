@@ -220,9 +220,14 @@ void on_down(host_actor* self, const caf::down_msg& msg) {
   }
   auto it = st.run->participant_of.find(msg.source);
   if (it == st.run->participant_of.end()) return;
-  st.run->participants.erase(it->second);
-  st.run->batch.waiting.erase(it->second);
+  const auto id = it->second;
   st.run->participant_of.erase(it);
+  // A camera crashed and spawned again in one turn: the old one's end may come after the new
+  // one took its id.
+  auto current = st.run->participants.find(id);
+  if (current == st.run->participants.end() || current->second.address() != msg.source) return;
+  st.run->participants.erase(current);
+  st.run->batch.waiting.erase(id);
   answer_batch(self);
 }
 

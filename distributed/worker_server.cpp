@@ -42,6 +42,10 @@ void serve_worker(const worker_options& options, const std::function<void(unsign
   }
   listening(*port);
   while (!stop()) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  // What a run left here ends first: the actor system waits for every actor before it goes.
+  caf::scoped_actor self{system};
+  self->request(host, std::chrono::seconds(5), actors::release_atom_v)
+      .receive([](actors::done_atom) {}, [](caf::error&) {});
   caf::anon_send_exit(host, caf::exit_reason::user_shutdown);
 }
 

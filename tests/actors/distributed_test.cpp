@@ -108,6 +108,34 @@ TEST(distributed, one_two_and_three_workers_write_what_one_process_writes) {
   std::filesystem::remove_all(alone_dir);
 }
 
+TEST(distributed, a_camera_crashed_and_recovered_in_one_tick_comes_back_on_its_worker) {
+  // The old node's end may reach its worker after the new one took its place at the clock.
+  auto with_faults = [](const std::filesystem::path& dir) {
+    auto s = replay_faults(dir);
+    s.run.duration = config::seconds{12.0};
+    for (auto kind : {config::fault_kind::crash, config::fault_kind::recover}) {
+      config::fault f;
+      f.at = config::seconds{3.0};
+      f.kind = kind;
+      f.camera = 7;
+      s.faults.push_back(f);
+    }
+    return s;
+  };
+  const auto alone_dir = scratch("race-alone");
+  run_scenario(with_faults(alone_dir), run_options{});
+  const auto dir = scratch("race-two");
+  run_options options;
+  options.workers = std::make_shared<local_workers>(2);
+  auto outcome = run_scenario(with_faults(dir), options);
+  EXPECT_TRUE(outcome.result.failure.empty()) << outcome.result.failure;
+  EXPECT_EQ(outputs(dir), outputs(alone_dir));
+  EXPECT_NE(file_text(dir / "events.jsonl").find("\"kind\":\"node_recovered\",\"camera\":7"),
+            std::string::npos);
+  std::filesystem::remove_all(alone_dir);
+  std::filesystem::remove_all(dir);
+}
+
 TEST(distributed, what_one_process_cannot_share_is_refused_before_the_run) {
   auto s = replay_faults(scratch("refused"));
   s.sensing.geometry = config::group_geometry::ground_truth;
