@@ -96,6 +96,13 @@ worker_setup setup_for_workers(const config::scenario& scenario, const run_optio
   return setup;
 }
 
+// An actor that only lives: the workers watch it, and end what they host when it goes. (Its
+// unused argument: CAF 0.17 binds a function actor's arguments through a null tuple when there
+// are none, which UBSan reports.)
+caf::behavior anchor_behavior(caf::event_based_actor*, int) {
+  return {[](done_atom) {}};
+}
+
 // The world's first snapshot, which the crowd's spawner published before any tick, on every
 // worker's board too.
 void share_first_snapshot(caf::actor_system& system, const std::vector<worker_contact>& workers,
@@ -251,7 +258,7 @@ run_outcome run_scenario(const config::scenario& scenario, const run_options& op
   // Lives until the workers have handed over their logs: they watch it, and end what they
   // host when it goes (with this process or its connection).
   caf::actor anchor;
-  if (!workers.empty()) anchor = system.spawn([]() -> caf::behavior { return {[](done_atom) {}}; });
+  if (!workers.empty()) anchor = system.spawn(anchor_behavior, 0);
   network_directory net;
   if (workers.empty()) {
     net = spawn_network(system, scenario, topo, clock, std::move(cameras_world));
