@@ -2,6 +2,7 @@
 
 #include <cstdint>
 
+#include "actors/wire_double.hpp"
 #include "caf/actor.hpp"
 
 namespace argus::actors {
@@ -28,7 +29,7 @@ struct link_command {
 
 template <class Inspector>
 typename Inspector::result_type inspect(Inspector& f, link_command& x) {
-  return f(x.op, x.node, x.handle, x.loss_probability, x.until_tick, x.extra_ticks);
+  return f(x.op, x.node, x.handle, as_bits(x.loss_probability), x.until_tick, x.extra_ticks);
 }
 
 }  // namespace argus::actors

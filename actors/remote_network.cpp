@@ -2,6 +2,7 @@
 
 #include <map>
 #include <stdexcept>
+#include <tuple>
 #include <utility>
 
 #include "actors/camera_node.hpp"
@@ -16,21 +17,49 @@ namespace argus::actors {
 
 namespace {
 
+// Waits for `worker`'s answer of type T to the request behind `pending`, or throws naming it.
+template <class T, class Pending>
+T collect(caf::scoped_actor& self, const worker_contact& worker, std::chrono::milliseconds timeout,
+          const char* what, Pending& pending) {
+  std::optional<T> out;
+  std::string failure;
+  pending.receive([&](T& answer) { out = std::move(answer); },
+                  [&](caf::error& err) {
+                    failure = err == caf::sec::request_timeout
+                                  ? fmt::format("no answer within {} s", timeout.count() / 1000.0)
+                                  : self->system().render(err);
+                  });
+  if (!out) throw std::runtime_error(fmt::format("worker {} ({}): {}", worker.name, what, failure));
+  return std::move(*out);
+}
+
 // Asks `worker` and waits for its answer of type T, or throws naming it.
 template <class T, class... Ts>
 T ask(caf::scoped_actor& self, const worker_contact& worker, std::chrono::milliseconds timeout,
       const char* what, Ts&&... xs) {
-  std::optional<T> out;
-  std::string failure;
-  self->request(worker.host, timeout, std::forward<Ts>(xs)...)
-      .receive([&](T& answer) { out = std::move(answer); },
-               [&](caf::error& err) {
-                 failure = err == caf::sec::request_timeout
-                               ? fmt::format("no answer within {} s", timeout.count() / 1000.0)
-                               : self->system().render(err);
-               });
-  if (!out) throw std::runtime_error(fmt::format("worker {} ({}): {}", worker.name, what, failure));
-  return std::move(*out);
+  auto pending = self->request(worker.host, timeout, std::forward<Ts>(xs)...);
+  return collect<T>(self, worker, timeout, what, pending);
+}
+
+// Asks every worker at once, worker w with `message_of(w)`'s elements, and waits for all their
+// answers of type T, in the workers' order: one after the other, a run waited for the sum of
+// their set-ups (each parses the scenario and loads the station), side by side for the longest.
+template <class T, class Message>
+std::vector<T> ask_all(caf::scoped_actor& self, const std::vector<worker_contact>& workers,
+                       std::chrono::milliseconds timeout, const char* what, Message message_of) {
+  const auto request = [&](std::size_t w) {
+    return std::apply(
+        [&](auto&&... xs) {
+          return self->request(workers[w].host, timeout, std::forward<decltype(xs)>(xs)...);
+        },
+        message_of(w));
+  };
+  std::vector<decltype(request(0))> pending;
+  for (std::size_t w = 0; w < workers.size(); ++w) pending.push_back(request(w));
+  std::vector<T> answers;
+  for (std::size_t w = 0; w < workers.size(); ++w)
+    answers.push_back(collect<T>(self, workers[w], timeout, what, pending[w]));
+  return answers;
 }
 
 }  // namespace
@@ -72,11 +101,14 @@ network_directory spawn_remote_network(caf::actor_system& system, const config::
   caf::scoped_actor self{system};
   std::vector<std::pair<caf::actor, participant_info>> links;
   std::vector<caf::actor> handles(topo.links().size());
+  const auto spawned_links =
+      ask_all<std::vector<caf::actor>>(self, workers, timeout, "setting up", [&](std::size_t w) {
+        auto mine = setup;
+        mine.links = links_of[w];
+        return std::make_tuple(worker_setup_atom_v, std::move(mine));
+      });
   for (std::size_t w = 0; w < workers.size(); ++w) {
-    auto mine = setup;
-    mine.links = links_of[w];
-    auto spawned = ask<std::vector<caf::actor>>(self, workers[w], timeout, "setting up",
-                                                worker_setup_atom_v, std::move(mine));
+    const auto& spawned = spawned_links[w];
     if (spawned.size() != links_of[w].size())
       throw std::runtime_error(fmt::format("worker {} spawned {} links of {}", workers[w].name,
                                            spawned.size(), links_of[w].size()));
@@ -100,16 +132,20 @@ network_directory spawn_remote_network(caf::actor_system& system, const config::
     cameras_of[where.at(cam.id)].push_back(std::move(p));
   }
   std::map<int, caf::actor> nodes;
+  std::vector<std::vector<int>> ids_of(workers.size());
+  for (std::size_t w = 0; w < workers.size(); ++w)
+    for (const auto& p : cameras_of[w]) ids_of[w].push_back(p.camera);
+  const auto spawned_cameras = ask_all<std::vector<caf::actor>>(
+      self, workers, timeout, "spawning cameras", [&](std::size_t w) {
+        return std::make_tuple(spawn_cameras_atom_v, std::move(cameras_of[w]));
+      });
   for (std::size_t w = 0; w < workers.size(); ++w) {
-    auto count = cameras_of[w].size();
-    std::vector<int> ids;
-    for (const auto& p : cameras_of[w]) ids.push_back(p.camera);
-    auto spawned = ask<std::vector<caf::actor>>(self, workers[w], timeout, "spawning cameras",
-                                                spawn_cameras_atom_v, std::move(cameras_of[w]));
+    const auto& spawned = spawned_cameras[w];
+    const auto count = ids_of[w].size();
     if (spawned.size() != count)
       throw std::runtime_error(fmt::format("worker {} spawned {} cameras of {}", workers[w].name,
                                            spawned.size(), count));
-    for (std::size_t k = 0; k < count; ++k) nodes[ids[k]] = spawned[k];
+    for (std::size_t k = 0; k < count; ++k) nodes[ids_of[w][k]] = spawned[k];
   }
   for (const auto& cam : scenario.cameras) {
     const auto w = where.at(cam.id);

@@ -108,9 +108,11 @@ caf::behavior anchor_behavior(caf::event_based_actor*, int) {
 void share_first_snapshot(caf::actor_system& system, const std::vector<worker_contact>& workers,
                           const world::snapshot& first) {
   caf::scoped_actor self{system};
+  auto delta = delta_between(nullptr, first);
+  const auto bytes = serialize(delta);
   for (const auto& w : workers) {
     std::string failure;
-    self->request(w.host, std::chrono::seconds(10), board_atom_v, to_wire(first),
+    self->request(w.host, std::chrono::seconds(10), board_atom_v, bytes,
                   std::vector<eval::task_origin>{})
         .receive([](done_atom) {}, [&](caf::error& err) { failure = system.render(err); });
     if (!failure.empty())

@@ -15,6 +15,7 @@
 #include "actors/render_pool.hpp"
 #include "actors/run_result.hpp"
 #include "actors/sim_event.hpp"
+#include "actors/snapshot_delta.hpp"
 #include "actors/tick_ack.hpp"
 #include "actors/wire_log.hpp"
 #include "actors/wire_world.hpp"
@@ -47,7 +48,7 @@ CAF_ADD_TYPE_ID(argus, (argus::actors::partition_report))
 CAF_ADD_TYPE_ID(argus, (argus::actors::render_request))
 CAF_ADD_TYPE_ID(argus, (argus::actors::render_result))
 CAF_ADD_TYPE_ID(argus, (std::shared_ptr<const argus::world::snapshot>))
-CAF_ADD_TYPE_ID(argus, (argus::actors::wire_snapshot))
+CAF_ADD_TYPE_ID(argus, (argus::actors::serialized_delta))
 CAF_ADD_TYPE_ID(argus, (argus::eval::task_origin))
 CAF_ADD_TYPE_ID(argus, (std::vector<argus::eval::task_origin>))
 CAF_ADD_TYPE_ID(argus, (argus::eval::observation_log::contents))

@@ -1,10 +1,12 @@
 #pragma once
 
 // The observation log's records as they cross between a worker and the coordinator
-// (docs/distributed.md): CAF inspectors, so the middleman serialises them.
+// (docs/distributed.md): CAF inspectors, so the middleman serialises them; doubles as their bits
+// (wire_double.hpp).
 
 #include <cstdint>
 
+#include "actors/wire_double.hpp"
 #include "eval/observation_log.hpp"
 #include "eval/records.hpp"
 #include "vision/ptz_camera.hpp"
@@ -13,7 +15,8 @@ namespace argus::vision {
 
 template <class Inspector>
 typename Inspector::result_type inspect(Inspector& f, ptz_state& x) {
-  return f(x.pan_deg, x.tilt_deg, x.field_of_view_deg);
+  return f(actors::as_bits(x.pan_deg), actors::as_bits(x.tilt_deg),
+           actors::as_bits(x.field_of_view_deg));
 }
 
 }  // namespace argus::vision
@@ -23,13 +26,16 @@ namespace argus::eval {
 // cv::Rect2d is OpenCV's, out of reach of argument-dependent lookup: its members go one by one.
 template <class Inspector>
 typename Inspector::result_type inspect(Inspector& f, look_record& x) {
-  return f(x.task, x.leader, x.found, x.box.x, x.box.y, x.box.width, x.box.height, x.score, x.truth,
-           x.iou, x.observed);
+  using actors::as_bits;
+  return f(x.task, x.leader, x.found, as_bits(x.box.x), as_bits(x.box.y), as_bits(x.box.width),
+           as_bits(x.box.height), as_bits(x.score), x.truth, as_bits(x.iou), x.observed);
 }
 
 template <class Inspector>
 typename Inspector::result_type inspect(Inspector& f, visible_box& x) {
-  return f(x.pedestrian, x.box.x, x.box.y, x.box.width, x.box.height, x.visibility);
+  using actors::as_bits;
+  return f(x.pedestrian, as_bits(x.box.x), as_bits(x.box.y), as_bits(x.box.width),
+           as_bits(x.box.height), as_bits(x.visibility));
 }
 
 template <class Inspector>
@@ -44,7 +50,9 @@ typename Inspector::result_type inspect(Inspector& f, task_origin& x) {
 
 template <class Inspector>
 typename Inspector::result_type inspect(Inspector& f, target_sample& x) {
-  return f(x.tick, x.task, x.pedestrian, x.x_m, x.y_m, x.height_m, x.present);
+  using actors::as_bits;
+  return f(x.tick, x.task, x.pedestrian, as_bits(x.x_m), as_bits(x.y_m), as_bits(x.height_m),
+           x.present);
 }
 
 /// A worker sends its whole log when the run is over (actors/worker_host.hpp).

@@ -98,6 +98,8 @@ struct hosted_run {
   std::map<std::uint64_t, caf::actor> participants;
   std::map<caf::actor_addr, std::uint64_t> participant_of;
   tick_batch batch;
+  /// The last snapshot the coordinator sent: the next arrives as changes to it.
+  std::shared_ptr<const world::snapshot> last;
 };
 
 struct worker_host_state {
@@ -263,11 +265,19 @@ caf::behavior worker_host(host_actor* self, std::string name, std::size_t render
         if (!st.run) return {};
         return st.run->picks->take();
       },
-      [self](board_atom, wire_snapshot& frame, const std::vector<eval::task_origin>& picks) {
+      [self](board_atom, const serialized_delta& delta,
+             const std::vector<eval::task_origin>& picks) -> caf::result<done_atom> {
         auto& st = self->state;
         if (!st.run) return done_atom_v;
         for (const auto& o : picks) st.run->log->add_origin_if_new(o);
-        st.run->world->board->publish(from_wire(*st.run->world->station, std::move(frame)));
+        try {
+          st.run->last =
+              apply_delta(*st.run->world->station, st.run->last.get(), deserialize(delta));
+        } catch (const std::invalid_argument& e) {
+          spdlog::error("worker {}: {}", st.name, e.what());
+          return refuse(fmt::format("worker {}: {}", st.name, e.what()));
+        }
+        st.run->world->board->publish(st.run->last);
         return done_atom_v;
       },
       [self](take_log_atom) -> eval::observation_log::contents {

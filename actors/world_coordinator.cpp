@@ -80,6 +80,8 @@ struct world_coordinator_state {
   participant_info info;
   std::optional<coordinator_setup> setup;
   std::shared_ptr<const world::snapshot> current;
+  /// The snapshot the workers' boards hold: the next one travels as changes to it.
+  std::shared_ptr<const world::snapshot> published;
   ordered_inbox<partition_report> reports;
   std::uint64_t sent = 0;
   remote_exchange exchange;
@@ -178,18 +180,23 @@ void step_world(caf::stateful_actor<world_coordinator_state>* self, tick_context
 }
 
 // The workers' answers: a failed one means the worker is gone, and the clock ends the run for
-// it (it monitors the worker's cameras), so this tick is never acknowledged.
+// it (it monitors the worker's cameras), so this tick is never acknowledged. A worker that
+// answered with an error instead (a snapshot it could not rebuild) ends the run: without the
+// world the clock cannot go on.
 void worker_failed(caf::stateful_actor<world_coordinator_state>* self, const caf::error& err) {
   spdlog::error("world: a worker did not answer: {}", self->system().render(err));
+  if (err == caf::sec::runtime_error) self->quit(err);
 }
 
 void publish_to_workers(caf::stateful_actor<world_coordinator_state>* self) {
   auto& st = self->state;
   auto& ex = st.exchange;
   ex.waiting = st.setup->remote_boards.size();
-  const auto frame = to_wire(*st.current);
+  auto delta = delta_between(st.published.get(), *st.current);
+  const auto bytes = serialize(delta);
+  st.published = st.current;
   for (const auto& board : st.setup->remote_boards)
-    self->request(board, caf::infinite, board_atom_v, frame, ex.picks)
+    self->request(board, caf::infinite, board_atom_v, bytes, ex.picks)
         .then(
             [self](done_atom) {
               auto& ex = self->state.exchange;
@@ -233,6 +240,7 @@ caf::behavior world_coordinator(caf::stateful_actor<world_coordinator_state>* se
   auto& st = self->state;
   st.info = world_coordinator_participant();
   st.current = setup.initial;
+  st.published = setup.initial;  // run_scenario shares it with the workers before the first tick
   st.setup.emplace(std::move(setup));
   // A run that ends early (a lost worker, a strategy that raised) still leaves whole files:
   // every row written is a whole tick, so they get their names up to where the world got.

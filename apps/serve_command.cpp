@@ -12,6 +12,7 @@
 #include "apps/task_option.hpp"
 #include "config/scenario_error.hpp"
 #include "config/whole_file.hpp"
+#include "distributed/loopback.hpp"
 #include "fmt/format.h"
 #include "live/command_log.hpp"
 #include "live/session.hpp"
@@ -42,11 +43,6 @@ void wait_for_interrupt() {
   sigwait(&signals, &received);
 }
 
-// Whether `address` reaches this machine's loopback only.
-bool is_loopback(const std::string& address) {
-  return address == "localhost" || address == "::1" || address.rfind("127.", 0) == 0;
-}
-
 int serve(const serve_arguments& args) {
   config::scenario scenario;
   try {
@@ -67,7 +63,7 @@ int serve(const serve_arguments& args) {
     settings.port = args.port;
     // Beyond loopback anyone who reaches the console could crash cameras: it then needs a
     // secret, printed here once and nowhere else (docs/serve.md, "Beyond loopback").
-    if (!is_loopback(args.bind)) settings.token = serve::make_console_token();
+    if (!distributed::is_loopback_host(args.bind)) settings.token = serve::make_console_token();
     server.start(settings);
     std::cout << fmt::format("argus serve: http://{}:{}/{}", args.bind, server.port(),
                              settings.token.empty() ? "" : "?token=" + settings.token)

@@ -3,12 +3,13 @@
 #include <charconv>
 #include <stdexcept>
 
+#include "distributed/loopback.hpp"
 #include "fmt/format.h"
 
 namespace argus::distributed {
 
 bool endpoint::loopback() const {
-  return host == "localhost" || host == "::1" || host.rfind("127.", 0) == 0;
+  return is_loopback_host(host);
 }
 
 endpoint parse_endpoint(std::string_view text, std::string_view what, bool any_port) {

@@ -19,12 +19,8 @@
 #include "actors/type_ids.hpp"
 #include "actors/worker_host.hpp"
 #include "actors/worker_pool.hpp"
-#include "caf/binary_deserializer.hpp"
-#include "caf/binary_serializer.hpp"
 #include "config/scenario_loader.hpp"
 #include "tests/actors/file_text.hpp"
-#include "world/crowd.hpp"
-#include "world/layout_loader.hpp"
 
 namespace argus::actors::testing {
 namespace {
@@ -177,33 +173,6 @@ TEST(distributed, placement_gives_every_worker_a_run_of_neighbours) {
   EXPECT_EQ(by_id.at(ids.front()), 0u);
   EXPECT_EQ(by_id.at(ids.back()), 1u);
   EXPECT_THROW(place_cameras(s, s.cameras.size() + 1), std::invalid_argument);
-}
-
-TEST(distributed, a_snapshot_crosses_the_wire_to_the_same_world) {
-  auto s = replay_faults(scratch("wire"));
-  auto station = world::station::load(world::layout_path(s));
-  world::crowd crowd(station, world::crowd_settings::from(s));
-  for (int i = 0; i < 60; ++i) crowd.step();
-  const auto& before = *crowd.current();
-  ASSERT_GT(before.pedestrians().size(), 10u);
-  system_config cfg(1);
-  caf::actor_system system{cfg};
-  std::vector<char> bytes;
-  caf::binary_serializer sink{system, bytes};
-  auto wire = to_wire(before);
-  ASSERT_FALSE(sink(wire));
-  wire_snapshot back;
-  caf::binary_deserializer source{system, bytes};
-  ASSERT_FALSE(source(back));
-  auto after = from_wire(*station, std::move(back));
-  EXPECT_EQ(after->tick(), before.tick());
-  EXPECT_EQ(after->time(), before.time());
-  ASSERT_EQ(after->pedestrians().size(), before.pedestrians().size());
-  for (std::size_t i = 0; i < before.pedestrians().size(); ++i)
-    EXPECT_TRUE(after->pedestrians()[i] == before.pedestrians()[i]) << "pedestrian " << i;
-  ASSERT_EQ(after->events().size(), before.events().size());
-  for (std::size_t i = 0; i < before.events().size(); ++i)
-    EXPECT_TRUE(after->events()[i] == before.events()[i]);
 }
 
 TEST(distributed, a_worker_of_another_version_is_refused_naming_both) {

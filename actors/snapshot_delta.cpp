@@ -1,0 +1,227 @@
+#include "actors/snapshot_delta.hpp"
+
+#include <bit>
+#include <chrono>
+#include <span>
+#include <stdexcept>
+#include <utility>
+
+#include "caf/binary_deserializer.hpp"
+#include "caf/binary_serializer.hpp"
+#include "fmt/format.h"
+
+namespace argus::actors {
+
+namespace {
+
+using world::pedestrian_state;
+
+// Bits, not values: -0.0 == 0.0, yet a heading drawn from a -0.0 facing is not the one drawn
+// from 0.0, and a worker must see what the coordinator has.
+bool same(double a, double b) {
+  return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+}
+
+bool same(const world::rgb8& a, const world::rgb8& b) {
+  return a.r == b.r && a.g == b.g && a.b == b.b;
+}
+
+bool same(const world::appearance& a, const world::appearance& b) {
+  return same(a.shirt, b.shirt) && same(a.trousers, b.trousers) && same(a.skin, b.skin) &&
+         same(a.hair, b.hair) && same(a.height_m, b.height_m) && same(a.girth_m, b.girth_m);
+}
+
+std::uint64_t bits_of(double x) {
+  return std::bit_cast<std::uint64_t>(x);
+}
+
+double from_bits(std::uint64_t x) {
+  return std::bit_cast<double>(x);
+}
+
+// A field added to pedestrian_state must be added to wire_pedestrian (or moved_state) and to
+// the conversions and the comparison below, or a worker would keep a stale value of it.
+static_assert(sizeof(pedestrian_state) == 144,
+              "pedestrian_state changed: update wire_pedestrian, moved_state and same_slow()");
+
+// Everything but what a step changes.
+bool same_slow(const pedestrian_state& a, const pedestrian_state& b) {
+  return a.id == b.id && a.doing == b.doing && a.goal == b.goal && a.counter == b.counter &&
+         a.seat == b.seat && same(a.placed_heading_rad, b.placed_heading_rad) &&
+         same(a.look, b.look) && a.queue_join_tick == b.queue_join_tick && a.route == b.route &&
+         a.goal_serial == b.goal_serial;
+}
+
+moved_state moved_of(const pedestrian_state& p) {
+  return {{bits_of(p.position.x()), bits_of(p.position.y()), bits_of(p.velocity.x()),
+           bits_of(p.velocity.y()), bits_of(p.facing.x()), bits_of(p.facing.y()),
+           bits_of(p.distance_to_goal_m), bits_of(p.squeeze_m)}};
+}
+
+void move(pedestrian_state& p, const moved_state& m) {
+  const auto& b = m.bits;
+  p.position = {from_bits(b[0]), from_bits(b[1])};
+  p.velocity = {from_bits(b[2]), from_bits(b[3])};
+  p.facing = {from_bits(b[4]), from_bits(b[5])};
+  p.distance_to_goal_m = from_bits(b[6]);
+  p.squeeze_m = from_bits(b[7]);
+}
+
+wire_pedestrian to_wire(const pedestrian_state& p) {
+  wire_pedestrian w;
+  w.id = p.id;
+  w.doing = static_cast<std::uint8_t>(p.doing);
+  w.goal = static_cast<std::uint8_t>(p.goal);
+  w.counter = p.counter;
+  w.seat = p.seat;
+  w.moved = moved_of(p);
+  w.bits = {bits_of(p.placed_heading_rad), bits_of(p.look.height_m), bits_of(p.look.girth_m)};
+  w.shirt = p.look.shirt;
+  w.trousers = p.look.trousers;
+  w.skin = p.look.skin;
+  w.hair = p.look.hair;
+  w.queue_join_tick = p.queue_join_tick;
+  w.route = p.route;
+  w.goal_serial = p.goal_serial;
+  return w;
+}
+
+pedestrian_state from_wire(const wire_pedestrian& w) {
+  pedestrian_state p;
+  p.id = w.id;
+  p.doing = static_cast<world::activity>(w.doing);
+  p.goal = static_cast<world::goal_kind>(w.goal);
+  p.counter = w.counter;
+  p.seat = w.seat;
+  move(p, w.moved);
+  p.placed_heading_rad = from_bits(w.bits[0]);
+  p.look.height_m = from_bits(w.bits[1]);
+  p.look.girth_m = from_bits(w.bits[2]);
+  p.look.shirt = w.shirt;
+  p.look.trousers = w.trousers;
+  p.look.skin = w.skin;
+  p.look.hair = w.hair;
+  p.queue_join_tick = w.queue_join_tick;
+  p.route = w.route;
+  p.goal_serial = w.goal_serial;
+  return p;
+}
+
+[[noreturn]] void out_of_step(const std::string& what) {
+  throw std::invalid_argument("a snapshot delta does not fit the snapshot before it: " + what);
+}
+
+}  // namespace
+
+serialized_delta serialize(snapshot_delta& delta) {
+  serialized_delta out;
+  caf::binary_serializer sink{nullptr, out.bytes};
+  if (auto err = sink(delta))
+    throw std::runtime_error("cannot serialise a snapshot delta: " + caf::to_string(err));
+  return out;
+}
+
+snapshot_delta deserialize(const serialized_delta& bytes) {
+  snapshot_delta out;
+  caf::binary_deserializer source{nullptr, bytes.bytes};
+  if (auto err = source(out))
+    throw std::invalid_argument("a snapshot delta that cannot be read: " + caf::to_string(err));
+  return out;
+}
+
+snapshot_delta delta_between(const world::snapshot* before, const world::snapshot& now) {
+  const std::span<const pedestrian_state> old =
+      before ? before->pedestrians() : std::span<const pedestrian_state>{};
+  const auto current = now.pedestrians();
+  snapshot_delta d;
+  d.tick = now.tick();
+  d.time_bits = bits_of(now.time().count());
+  d.gone.assign(old.size(), 1);
+  d.changes.reserve(current.size());
+  d.moved.reserve(current.size());
+  d.events.assign(now.events().begin(), now.events().end());
+  // Both in id order: one walk through the two finds who stayed.
+  std::size_t j = 0;
+  for (const auto& p : current) {
+    while (j < old.size() && old[j].id < p.id) ++j;
+    if (j == old.size() || old[j].id != p.id) {
+      d.changes.push_back(static_cast<std::uint8_t>(pedestrian_change::arrived));
+      d.whole.push_back(to_wire(p));
+      continue;
+    }
+    const auto& q = old[j];
+    d.gone[j++] = 0;
+    if (!same_slow(p, q)) {
+      d.changes.push_back(static_cast<std::uint8_t>(pedestrian_change::changed));
+      d.whole.push_back(to_wire(p));
+      continue;
+    }
+    auto m = moved_of(p);
+    if (m == moved_of(q)) {
+      d.changes.push_back(static_cast<std::uint8_t>(pedestrian_change::kept));
+      continue;
+    }
+    d.changes.push_back(static_cast<std::uint8_t>(pedestrian_change::moved));
+    d.moved.push_back(m);
+  }
+  return d;
+}
+
+std::shared_ptr<const world::snapshot> apply_delta(const world::station& where,
+                                                   const world::snapshot* before,
+                                                   snapshot_delta delta) {
+  const std::span<const pedestrian_state> old =
+      before ? before->pedestrians() : std::span<const pedestrian_state>{};
+  if (delta.gone.size() != old.size())
+    out_of_step(fmt::format("it is for {} pedestrians, the snapshot before (tick {}) has {}",
+                            delta.gone.size(), before ? before->tick() : 0, old.size()));
+  std::vector<pedestrian_state> people;
+  people.reserve(delta.changes.size());
+  std::size_t j = 0;
+  std::size_t next_moved = 0;
+  std::size_t next_whole = 0;
+  const auto stayed = [&]() -> const pedestrian_state& {
+    while (j < old.size() && delta.gone[j] != 0) ++j;
+    if (j == old.size()) out_of_step("more pedestrians stayed than were there");
+    return old[j++];
+  };
+  const auto whole = [&]() {
+    if (next_whole == delta.whole.size()) out_of_step("fewer whole pedestrians than changes");
+    return from_wire(delta.whole[next_whole++]);
+  };
+  for (auto c : delta.changes) {
+    switch (static_cast<pedestrian_change>(c)) {
+      case pedestrian_change::kept:
+        people.push_back(stayed());
+        break;
+      case pedestrian_change::moved: {
+        people.push_back(stayed());
+        if (next_moved == delta.moved.size()) out_of_step("fewer moves than moved pedestrians");
+        move(people.back(), delta.moved[next_moved++]);
+        break;
+      }
+      case pedestrian_change::changed: {
+        const auto& was = stayed();
+        auto is = whole();
+        if (is.id != was.id)
+          out_of_step(fmt::format("pedestrian {} changed in the place of {}", is.id, was.id));
+        people.push_back(std::move(is));
+        break;
+      }
+      case pedestrian_change::arrived:
+        people.push_back(whole());
+        break;
+      default:
+        out_of_step(fmt::format("unknown change {}", static_cast<int>(c)));
+    }
+  }
+  while (j < old.size() && delta.gone[j] != 0) ++j;
+  if (j != old.size()) out_of_step("a pedestrian before is neither gone nor in it");
+  if (next_moved != delta.moved.size() || next_whole != delta.whole.size())
+    out_of_step("records left over");
+  return std::make_shared<const world::snapshot>(
+      where, delta.tick, std::chrono::duration<double>{from_bits(delta.time_bits)},
+      std::move(people), std::move(delta.events));
+}
+
+}  // namespace argus::actors
