@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "actors/participant_ids.hpp"
 #include "actors/phase.hpp"
 #include "actors/type_ids.hpp"
 #include "events/event.hpp"
@@ -277,13 +278,18 @@ class clock_actor : public caf::event_based_actor {
       lose_worker(info.host, name);
       return;
     }
-    if (info.mode == wake_mode::never) {
+    if (info.mode == wake_mode::never || id == participant_ids::world_coordinator) {
       // A relay that died owes hand-overs that will never come: the receivers would wait for
-      // them forever, so the run ends here, saying why, rather than stall.
-      auto why = fmt::format(
-          "{} stopped unexpectedly at tick {} ({}); the network cannot "
-          "deliver what it owes",
-          name, tick_, to_string(msg.reason));
+      // them forever, so the run ends here, saying why, rather than stall. Without the world
+      // (a worker that could not rebuild its snapshot ends it) the cameras would go on looking
+      // at a world that no longer moves.
+      auto why = info.mode == wake_mode::never
+                     ? fmt::format(
+                           "{} stopped unexpectedly at tick {} ({}); the network cannot "
+                           "deliver what it owes",
+                           name, tick_, to_string(msg.reason))
+                     : fmt::format("the {} stopped unexpectedly at tick {} ({})", name, tick_,
+                                   to_string(msg.reason));
       spdlog::error("clock: {}", why);
       if (promise_.pending()) promise_.deliver(caf::make_error(caf::sec::runtime_error, why));
       shut_down();

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "actors/participant_ids.hpp"
 #include "actors/system_config.hpp"
 #include "caf/test/dsl.hpp"
 #include "caf/test/unit_test_impl.hpp"
@@ -250,6 +251,24 @@ CAF_TEST(a relay that dies ends the run with an error that names it) {
                 caf::after(std::chrono::seconds(0)) >> [] { CAF_FAIL("the run stalled"); });
   CAF_CHECK_NOT_EQUAL(error.find("link/3-4"), std::string::npos);
   CAF_CHECK_EQUAL(count("1:1:crowd"), 0u);
+}
+
+CAF_TEST(the world that dies ends the run with an error that names it) {
+  auto clock = make_clock(5);
+  add_probe(clock, info(1, "crowd", phase::world));
+  auto world = sys.spawn(silent, "x");
+  self->send(
+      clock, join_atom_v, world,
+      info(participant_ids::world_coordinator, "world", phase::network, wake_mode::on_demand));
+  self->send(clock, start_atom_v);
+  sched.run();
+  caf::anon_send_exit(world, caf::exit_reason::kill);
+  run();
+  std::string error;
+  self->receive([&](run_result&) { CAF_FAIL("the run went on without its world"); },
+                [&](caf::error& err) { error = to_string(err); },
+                caf::after(std::chrono::seconds(0)) >> [] { CAF_FAIL("the run stalled"); });
+  CAF_CHECK_NOT_EQUAL(error.find("the world stopped unexpectedly"), std::string::npos);
 }
 
 CAF_TEST(at speed 1 virtual time stays within one tick of wall time) {
