@@ -5,6 +5,8 @@
 #include <map>
 #include <mutex>
 #include <optional>
+#include <utility>
+#include <vector>
 
 #include "vision/ptz_camera.hpp"
 
@@ -44,6 +46,16 @@ class camera_pose_board {
     for (auto k : {1, 0})
       if (it->second[k].tick >= 0 && it->second[k].tick < tick) return it->second[k];
     return std::nullopt;
+  }
+
+  /// Every camera's latest pose, by camera id: what a worker hands its coordinator, whose board
+  /// then answers `before` as the worker's would.
+  std::vector<std::pair<int, entry>> latest() const {
+    std::lock_guard<std::mutex> guard(mutex_);
+    std::vector<std::pair<int, entry>> out;
+    out.reserve(by_camera_.size());
+    for (const auto& [camera, last] : by_camera_) out.emplace_back(camera, last[1]);
+    return out;
   }
 
  private:

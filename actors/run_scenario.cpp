@@ -75,7 +75,6 @@ void check_distributable(const config::scenario& scenario, const run_options& op
     throw std::runtime_error("--workers: " + what + " runs in one process only, for now");
   };
   if (options.live) refuse("a live run (argus serve)");
-  if (options.video) refuse("--video");
   if (scenario.sensing.geometry != config::group_geometry::none)
     refuse("sensing.group_geometry (cameras share a board)");
   if (scenario.sensing.reappearance != config::reappearance_model::none)
@@ -92,6 +91,7 @@ worker_setup setup_for_workers(const config::scenario& scenario, const run_optio
   if (!scenario.sensing.sensor_model.empty())
     setup.sensor_model_text = config::read_whole_file(sensor_model_path(scenario));
   setup.with_visible = options.mot;
+  setup.with_poses = options.video;
   setup.coordinator = std::move(anchor);
   return setup;
 }
@@ -212,6 +212,13 @@ run_outcome run_scenario(const config::scenario& scenario, const run_options& op
     vs.render_pool = pool.front;
     cameras_world->poses = std::make_shared<camera_pose_board>();
     vs.poses = cameras_world->poses;
+    // The cameras are on the workers: their poses come with the picks, every tick, before the
+    // world's snapshot reaches the recorder.
+    if (!workers.empty())
+      world_settings.poses_gathered =
+          [poses = cameras_world->poses](const std::vector<pose_record>& got) {
+            for (const auto& r : got) poses->put(r.camera, r.tick, r.pose);
+          };
     caf::actor video;
     try {
       video = spawn_video_recorder(system, std::move(vs));

@@ -53,6 +53,7 @@ CAF_ADD_TYPE_ID(argus, (argus::eval::task_origin))
 CAF_ADD_TYPE_ID(argus, (std::vector<argus::eval::task_origin>))
 CAF_ADD_TYPE_ID(argus, (argus::eval::observation_log::contents))
 CAF_ADD_TYPE_ID(argus, (argus::actors::worker_setup))
+CAF_ADD_TYPE_ID(argus, (argus::actors::worker_gather))
 CAF_ADD_TYPE_ID(argus, (argus::actors::camera_placement))
 CAF_ADD_TYPE_ID(argus, (std::vector<argus::actors::camera_placement>))
 

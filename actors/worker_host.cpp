@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "actors/camera_node.hpp"
+#include "actors/camera_pose_board.hpp"
 #include "actors/camera_world_setup.hpp"
 #include "actors/link.hpp"
 #include "actors/participant_ids.hpp"
@@ -143,6 +144,7 @@ caf::result<std::vector<caf::actor>> set_up(host_actor* self, worker_setup& setu
     run.picks = std::make_shared<pick_outbox>();
     run.world = make_camera_world(run.scenario, station, std::move(model),
                                   std::max<std::size_t>(1, st.render_threads), run.log);
+    if (setup.with_poses) run.world->poses = std::make_shared<camera_pose_board>();
     run.world->observer = std::make_shared<run_observer>(
         run.log, nullptr, [picks = run.picks](const eval::task_origin& o) { picks->add(o); });
     auto model_of_links = make_link_model(run.scenario);
@@ -260,10 +262,15 @@ caf::behavior worker_host(host_actor* self, std::string name, std::size_t render
       [self](spawn_cameras_atom, std::vector<camera_placement>& cameras) {
         return spawn_cameras(self, cameras);
       },
-      [self](gather_atom) -> std::vector<eval::task_origin> {
+      [self](gather_atom) -> worker_gather {
         auto& st = self->state;
         if (!st.run) return {};
-        return st.run->picks->take();
+        worker_gather out;
+        out.picks = st.run->picks->take();
+        if (const auto& poses = st.run->world->poses)
+          for (const auto& [camera, e] : poses->latest())
+            out.poses.push_back({camera, e.tick, e.pose});
+        return out;
       },
       [self](board_atom, const serialized_delta& delta,
              const std::vector<eval::task_origin>& picks) -> caf::result<done_atom> {

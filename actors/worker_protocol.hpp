@@ -7,7 +7,10 @@
 #include <string>
 #include <vector>
 
+#include "actors/wire_log.hpp"
 #include "caf/actor.hpp"
+#include "eval/records.hpp"
+#include "vision/ptz_camera.hpp"
 
 namespace argus::actors {
 
@@ -33,6 +36,8 @@ struct worker_setup {
   std::string sensor_model_text;
   /// Whether frames record everyone visible (`--mot`).
   bool with_visible = false;
+  /// Whether the cameras leave their poses for the coordinator's video (`--video`).
+  bool with_poses = false;
   std::vector<link_placement> links;
   /// An actor that lives as long as the coordinator's run: when it goes (the run ended, the
   /// coordinator died or its connection broke), the worker ends what it hosted.
@@ -41,8 +46,8 @@ struct worker_setup {
 
 template <class Inspector>
 typename Inspector::result_type inspect(Inspector& f, worker_setup& x) {
-  return f(x.scenario_yaml, x.layout_text, x.sensor_model_text, x.with_visible, x.links,
-           x.coordinator);
+  return f(x.scenario_yaml, x.layout_text, x.sensor_model_text, x.with_visible, x.with_poses,
+           x.links, x.coordinator);
 }
 
 /// One of a camera's links, as the camera node is attached to it (attached_link).
@@ -66,6 +71,31 @@ struct camera_placement {
 template <class Inspector>
 typename Inspector::result_type inspect(Inspector& f, camera_placement& x) {
   return f(x.camera, x.links);
+}
+
+/// A pose a worker's camera left on its board (camera_pose_board): camera `camera`, in its turn
+/// of clock tick `tick`, moved to `pose`.
+struct pose_record {
+  int camera = 0;
+  std::int64_t tick = -1;
+  vision::ptz_state pose;
+};
+
+template <class Inspector>
+typename Inspector::result_type inspect(Inspector& f, pose_record& x) {
+  return f(x.camera, x.tick, x.pose);
+}
+
+/// A worker's answer to `gather_atom`: the picks its cameras made since it was last asked, by
+/// task, and, in a run with `--video`, each of its cameras' latest pose.
+struct worker_gather {
+  std::vector<eval::task_origin> picks;
+  std::vector<pose_record> poses;
+};
+
+template <class Inspector>
+typename Inspector::result_type inspect(Inspector& f, worker_gather& x) {
+  return f(x.picks, x.poses);
 }
 
 }  // namespace argus::actors

@@ -65,6 +65,7 @@ struct coordinator_setup {
   std::shared_ptr<snapshot_board> board;
   std::vector<caf::actor> remote_boards;
   std::function<void(const std::vector<eval::task_origin>&)> picks_gathered;
+  std::function<void(const std::vector<pose_record>&)> poses_gathered;
 };
 
 // A distributed tick in progress: the answers still awaited from the workers, then the ack.
@@ -220,10 +221,12 @@ void gather_picks(caf::stateful_actor<world_coordinator_state>* self, tick_conte
   for (const auto& board : st.setup->remote_boards)
     self->request(board, caf::infinite, gather_atom_v)
         .then(
-            [self](std::vector<eval::task_origin>& picks) {
+            [self](worker_gather& gathered) {
               auto& st = self->state;
               auto& ex = st.exchange;
-              ex.picks.insert(ex.picks.end(), picks.begin(), picks.end());
+              ex.picks.insert(ex.picks.end(), gathered.picks.begin(), gathered.picks.end());
+              // Each camera is on one worker: the order of the workers' answers cannot matter.
+              if (st.setup->poses_gathered) st.setup->poses_gathered(gathered.poses);
               if (--ex.waiting != 0) return;
               // Whatever order the workers answered in.
               std::sort(ex.picks.begin(), ex.picks.end(),
@@ -323,7 +326,8 @@ world_actors spawn_world(caf::actor_system& system, world_run_settings settings)
       coordinator_setup{settings.station, bounds, std::move(spawner), cs.behaviour.tick_s,
                         snapshot0, settings.end_tick, std::move(trajectories), partitions,
                         std::move(settings.snapshot_observers), settings.board,
-                        std::move(settings.remote_boards), std::move(settings.picks_gathered)});
+                        std::move(settings.remote_boards), std::move(settings.picks_gathered),
+                        std::move(settings.poses_gathered)});
   for (std::size_t i = 0; i < partitions.size(); ++i) {
     caf::anon_send(partitions[i], world_attach_atom_v, coordinator);
     out.participants.emplace_back(partitions[i], crowd_partition_participant(i));

@@ -9,6 +9,7 @@
 
 #include "actors/participant_info.hpp"
 #include "actors/snapshot_board.hpp"
+#include "actors/worker_protocol.hpp"
 #include "caf/actor.hpp"
 #include "caf/fwd.hpp"
 #include "eval/records.hpp"
@@ -44,6 +45,9 @@ struct world_run_settings {
   /// (`board_atom`), and acknowledges its tick once all have answered.
   std::vector<caf::actor> remote_boards;
   std::function<void(const std::vector<eval::task_origin>&)> picks_gathered;
+  /// The workers' cameras' poses, gathered with their picks when the run records video; null
+  /// for none.
+  std::function<void(const std::vector<pose_record>&)> poses_gathered;
 };
 
 /// The actors of a run's crowd, to join to the clock.

@@ -136,6 +136,34 @@ TEST(distributed, a_camera_crashed_and_recovered_in_one_tick_comes_back_on_its_w
   std::filesystem::remove_all(dir);
 }
 
+TEST(distributed, two_workers_record_the_video_one_process_records) {
+  // The cameras move on their workers; the coordinator renders the feeds from their poses.
+  auto with_video = [](const std::filesystem::path& dir) {
+    auto s = replay_faults(dir);
+    s.run.duration = config::seconds{14.0};
+    return s;
+  };
+  run_options options;
+  options.video = true;
+  options.video_width_px = 80;
+  options.video_height_px = 60;
+  const auto alone_dir = scratch("video-alone");
+  run_scenario(with_video(alone_dir), options);
+  const auto alone = file_text(alone_dir / "video" / "feeds.avi");
+  ASSERT_GT(alone.size(), 10000u);
+  // A group formed: some camera turned to its target, so the poses are not all the defaults.
+  ASSERT_NE(file_text(alone_dir / "events.jsonl").find("\"kind\":\"joined\""), std::string::npos);
+  const auto dir = scratch("video-two");
+  options.workers = std::make_shared<local_workers>(2);
+  auto outcome = run_scenario(with_video(dir), options);
+  EXPECT_TRUE(outcome.result.failure.empty()) << outcome.result.failure;
+  EXPECT_TRUE(file_text(dir / "video" / "feeds.avi") == alone)
+      << "the video of 2 workers differs from one process's";
+  EXPECT_EQ(outputs(dir), outputs(alone_dir));
+  std::filesystem::remove_all(alone_dir);
+  std::filesystem::remove_all(dir);
+}
+
 TEST(distributed, what_one_process_cannot_share_is_refused_before_the_run) {
   auto s = replay_faults(scratch("refused"));
   s.sensing.geometry = config::group_geometry::ground_truth;

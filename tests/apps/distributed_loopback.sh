@@ -4,7 +4,7 @@
 #   distributed_loopback.sh ARGUS SOURCE_DIR OUT
 # - replay_faults.yaml (pixels, every fault kind) with 1, 2 and 3 workers writes the same
 #   events.jsonl, trajectories.csv, poses.csv, tracks.csv and metrics.json (less its wall time)
-#   as one process;
+#   as one process, and with 2 workers the same --video;
 # - a worker killed mid-run: the coordinator ends within 5 s with exit 1, naming the worker and
 #   the last whole tick, and every line of events.jsonl is whole;
 # - a worker that never answers, or no worker at all, is reported by name;
@@ -68,6 +68,17 @@ run --set run.output_dir="$OUT/by-id" --workers "$list" --set placement.policy=i
   fail "placement id: $(tail -3 "$OUT/by-id.txt")"
 same_outputs "$OUT/alone" "$OUT/by-id"
 echo "3 workers placed by id: the same outputs as one process"
+
+# --video: the coordinator renders the feeds from the poses the workers' cameras leave.
+video() { "$ARGUS" run "$SOURCE/scenarios/replay_faults.yaml" --seed 5 --duration "12 s" \
+  --no-feeds --no-progress --set run.threads=2 --video --video-size 80x60 "$@"; }
+video --set run.output_dir="$OUT/video-alone" >"$OUT/video-alone.txt" 2>&1 ||
+  fail "the one-process video run: $(tail -3 "$OUT/video-alone.txt")"
+video --set run.output_dir="$OUT/video-w2" --workers "${ports[0]},${ports[1]}" >"$OUT/video-w2.txt" 2>&1 ||
+  fail "the video run with 2 workers: $(tail -3 "$OUT/video-w2.txt")"
+cmp -s "$OUT/video-alone/video/feeds.avi" "$OUT/video-w2/video/feeds.avi" ||
+  fail "2 workers recorded another video/feeds.avi"
+echo "2 workers, --video: the same feeds.avi as one process"
 
 # A worker killed mid-run.
 "$ARGUS" run "$SOURCE/scenarios/penn_station_emulated.yaml" --seed 5 --no-feeds --no-progress \
