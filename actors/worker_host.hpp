@@ -24,11 +24,12 @@ const char* argus_version();
 ///   of its own) and spawns the setup's links; answers their handles in the setup's order;
 /// - `(spawn_cameras_atom, std::vector<camera_placement>)` -> `std::vector<caf::actor>`: spawns
 ///   those camera nodes attached to their links (also for a camera that recovers from a crash);
-/// - every tick, in phase network, `(gather_atom)` -> `std::vector<eval::task_origin>`: the
-///   picks its cameras made since it was last asked, by task; then `(board_atom, serialized_delta,
-///   std::vector<eval::task_origin> picks)` -> `done_atom`: the picks of every worker join its
-///   log, and the world's new snapshot, rebuilt from the last one and the delta, its board,
-///   before its cameras' turns; an error when the delta does not fit the last snapshot;
+/// - every tick, in phase network, `(gather_atom)` -> `worker_gather`: the picks its cameras
+///   made since it was last asked, by task, and with `--video` each camera's latest pose; then
+///   `(board_atom, serialized_delta, std::vector<eval::task_origin> picks)` -> `done_atom`: the
+///   picks of every worker join its log, and the world's new snapshot, rebuilt from the last one
+///   and the delta, its board, before its cameras' turns; an error when the delta does not fit the
+///   last snapshot;
 /// - `(take_log_atom)` -> `eval::observation_log::contents`: what its cameras recorded;
 /// - `(release_atom)` -> `done_atom`: ends what it hosted and waits for the next run.
 caf::actor spawn_worker_host(caf::actor_system& system, std::string name,
