@@ -18,8 +18,12 @@ using world::pedestrian_state;
 
 // Bits, not values: -0.0 == 0.0, yet a heading drawn from a -0.0 facing is not the one drawn
 // from 0.0, and a worker must see what the coordinator has.
+std::uint64_t bits_of(double x) {
+  return std::bit_cast<std::uint64_t>(x);
+}
+
 bool same(double a, double b) {
-  return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+  return bits_of(a) == bits_of(b);
 }
 
 bool same(const world::rgb8& a, const world::rgb8& b) {
@@ -31,18 +35,14 @@ bool same(const world::appearance& a, const world::appearance& b) {
          same(a.hair, b.hair) && same(a.height_m, b.height_m) && same(a.girth_m, b.girth_m);
 }
 
-std::uint64_t bits_of(double x) {
-  return std::bit_cast<std::uint64_t>(x);
-}
-
 double from_bits(std::uint64_t x) {
   return std::bit_cast<double>(x);
 }
 
-// A field added to pedestrian_state must be added to wire_pedestrian (or moved_state) and to
-// the conversions and the comparison below, or a worker would keep a stale value of it.
+// A field added to pedestrian_state must be added to its inspector (wire_world.hpp), and to
+// moved_state or the comparison below, or a worker would keep a stale value of it.
 static_assert(sizeof(pedestrian_state) == 144,
-              "pedestrian_state changed: update wire_pedestrian, moved_state and same_slow()");
+              "pedestrian_state changed: update its inspector, moved_state and same_slow()");
 
 // Everything but what a step changes.
 bool same_slow(const pedestrian_state& a, const pedestrian_state& b) {
@@ -65,46 +65,6 @@ void move(pedestrian_state& p, const moved_state& m) {
   p.facing = {from_bits(b[4]), from_bits(b[5])};
   p.distance_to_goal_m = from_bits(b[6]);
   p.squeeze_m = from_bits(b[7]);
-}
-
-wire_pedestrian to_wire(const pedestrian_state& p) {
-  wire_pedestrian w;
-  w.id = p.id;
-  w.doing = static_cast<std::uint8_t>(p.doing);
-  w.goal = static_cast<std::uint8_t>(p.goal);
-  w.counter = p.counter;
-  w.seat = p.seat;
-  w.moved = moved_of(p);
-  w.bits = {bits_of(p.placed_heading_rad), bits_of(p.look.height_m), bits_of(p.look.girth_m)};
-  w.shirt = p.look.shirt;
-  w.trousers = p.look.trousers;
-  w.skin = p.look.skin;
-  w.hair = p.look.hair;
-  w.queue_join_tick = p.queue_join_tick;
-  w.route = p.route;
-  w.goal_serial = p.goal_serial;
-  return w;
-}
-
-pedestrian_state from_wire(const wire_pedestrian& w) {
-  pedestrian_state p;
-  p.id = w.id;
-  p.doing = static_cast<world::activity>(w.doing);
-  p.goal = static_cast<world::goal_kind>(w.goal);
-  p.counter = w.counter;
-  p.seat = w.seat;
-  move(p, w.moved);
-  p.placed_heading_rad = from_bits(w.bits[0]);
-  p.look.height_m = from_bits(w.bits[1]);
-  p.look.girth_m = from_bits(w.bits[2]);
-  p.look.shirt = w.shirt;
-  p.look.trousers = w.trousers;
-  p.look.skin = w.skin;
-  p.look.hair = w.hair;
-  p.queue_join_tick = w.queue_join_tick;
-  p.route = w.route;
-  p.goal_serial = w.goal_serial;
-  return p;
 }
 
 [[noreturn]] void out_of_step(const std::string& what) {
@@ -135,7 +95,7 @@ snapshot_delta delta_between(const world::snapshot* before, const world::snapsho
   const auto current = now.pedestrians();
   snapshot_delta d;
   d.tick = now.tick();
-  d.time_bits = bits_of(now.time().count());
+  d.time_s = now.time().count();
   d.gone.assign(old.size(), 1);
   d.changes.reserve(current.size());
   d.moved.reserve(current.size());
@@ -146,14 +106,14 @@ snapshot_delta delta_between(const world::snapshot* before, const world::snapsho
     while (j < old.size() && old[j].id < p.id) ++j;
     if (j == old.size() || old[j].id != p.id) {
       d.changes.push_back(static_cast<std::uint8_t>(pedestrian_change::arrived));
-      d.whole.push_back(to_wire(p));
+      d.whole.push_back(p);
       continue;
     }
     const auto& q = old[j];
     d.gone[j++] = 0;
     if (!same_slow(p, q)) {
       d.changes.push_back(static_cast<std::uint8_t>(pedestrian_change::changed));
-      d.whole.push_back(to_wire(p));
+      d.whole.push_back(p);
       continue;
     }
     auto m = moved_of(p);
@@ -185,9 +145,9 @@ std::shared_ptr<const world::snapshot> apply_delta(const world::station& where,
     if (j == old.size()) out_of_step("more pedestrians stayed than were there");
     return old[j++];
   };
-  const auto whole = [&]() {
+  const auto whole = [&]() -> pedestrian_state& {
     if (next_whole == delta.whole.size()) out_of_step("fewer whole pedestrians than changes");
-    return from_wire(delta.whole[next_whole++]);
+    return delta.whole[next_whole++];
   };
   for (auto c : delta.changes) {
     switch (static_cast<pedestrian_change>(c)) {
@@ -202,14 +162,14 @@ std::shared_ptr<const world::snapshot> apply_delta(const world::station& where,
       }
       case pedestrian_change::changed: {
         const auto& was = stayed();
-        auto is = whole();
+        auto& is = whole();
         if (is.id != was.id)
           out_of_step(fmt::format("pedestrian {} changed in the place of {}", is.id, was.id));
         people.push_back(std::move(is));
         break;
       }
       case pedestrian_change::arrived:
-        people.push_back(whole());
+        people.push_back(std::move(whole()));
         break;
       default:
         out_of_step(fmt::format("unknown change {}", static_cast<int>(c)));
@@ -219,9 +179,9 @@ std::shared_ptr<const world::snapshot> apply_delta(const world::station& where,
   if (j != old.size()) out_of_step("a pedestrian before is neither gone nor in it");
   if (next_moved != delta.moved.size() || next_whole != delta.whole.size())
     out_of_step("records left over");
-  return std::make_shared<const world::snapshot>(
-      where, delta.tick, std::chrono::duration<double>{from_bits(delta.time_bits)},
-      std::move(people), std::move(delta.events));
+  return std::make_shared<const world::snapshot>(where, delta.tick,
+                                                 std::chrono::duration<double>{delta.time_s},
+                                                 std::move(people), std::move(delta.events));
 }
 
 }  // namespace argus::actors

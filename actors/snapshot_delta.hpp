@@ -17,12 +17,9 @@
 
 namespace argus::actors {
 
-// Doubles cross as their bits: CAF 0.17 writes a double through a portable IEEE 754 packing
-// that drops the sign of zero (-0.0 arrives as 0.0), and a heading drawn from a facing of -0.0
-// is not the one drawn from 0.0.
-
-/// The fields a step changes in a walker, as bits: position, velocity and facing (x, y each),
-/// distance to the goal, squeeze. Everything else stays as it was.
+/// The fields a step changes in a walker, as bits (compared and sent as such, wire_double.hpp):
+/// position, velocity and facing (x, y each), distance to the goal, squeeze. Everything else stays
+/// as it was.
 struct moved_state {
   std::array<std::uint64_t, 8> bits{};
   friend bool operator==(const moved_state&, const moved_state&) = default;
@@ -31,31 +28,6 @@ struct moved_state {
 template <class Inspector>
 typename Inspector::result_type inspect(Inspector& f, moved_state& x) {
   return f(x.bits);
-}
-
-/// A whole pedestrian (`world::pedestrian_state`) as it crosses.
-struct wire_pedestrian {
-  int id = 0;
-  std::uint8_t doing = 0;
-  std::uint8_t goal = 0;
-  int counter = -1;
-  int seat = -1;
-  moved_state moved;
-  /// placed_heading_rad, and the look's height_m and girth_m.
-  std::array<std::uint64_t, 3> bits{};
-  world::rgb8 shirt;
-  world::rgb8 trousers;
-  world::rgb8 skin;
-  world::rgb8 hair;
-  std::uint64_t queue_join_tick = 0;
-  int route = -1;
-  std::uint32_t goal_serial = 0;
-};
-
-template <class Inspector>
-typename Inspector::result_type inspect(Inspector& f, wire_pedestrian& x) {
-  return f(x.id, x.doing, x.goal, x.counter, x.seat, x.moved, x.bits, x.shirt, x.trousers, x.skin,
-           x.hair, x.queue_join_tick, x.route, x.goal_serial);
 }
 
 /// What became of each pedestrian of the new snapshot, in its (id) order.
@@ -68,8 +40,7 @@ enum class pedestrian_change : std::uint8_t {
 
 struct snapshot_delta {
   std::uint64_t tick = 0;
-  /// The snapshot's time in seconds, as bits.
-  std::uint64_t time_bits = 0;
+  double time_s = 0.0;
   /// One byte per pedestrian of the snapshot before: 1 when it is not in this one. Its size
   /// also says which snapshot the delta applies to, so a receiver out of step finds out.
   std::vector<std::uint8_t> gone;
@@ -77,13 +48,13 @@ struct snapshot_delta {
   /// block rather than element by element.
   std::vector<std::uint8_t> changes;
   std::vector<moved_state> moved;
-  std::vector<wire_pedestrian> whole;
+  std::vector<world::pedestrian_state> whole;
   std::vector<world::event> events;
 };
 
 template <class Inspector>
 typename Inspector::result_type inspect(Inspector& f, snapshot_delta& x) {
-  return f(x.tick, x.time_bits, x.gone, x.changes, x.moved, x.whole, x.events);
+  return f(x.tick, as_bits(x.time_s), x.gone, x.changes, x.moved, x.whole, x.events);
 }
 
 /// A delta as CAF's binary serializer writes it, written once for every worker: the middleman
