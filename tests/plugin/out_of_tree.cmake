@@ -21,6 +21,11 @@ execute_process(
 if(NOT code EQUAL 0)
   message(FATAL_ERROR "the installed argus did not run the out-of-tree plug-in")
 endif()
+# The example beyond the paper's, which reuses the installed vision/ headers and wraps the
+# registered `paper` strategy: every symbol it takes from argus resolves in a run.
+step("${WORK}/prefix/bin/argus" run "${SOURCE}/scenarios/penn_station.yaml" --seed 3
+     --out "${WORK}/run_predictive" --no-feeds --duration 20s
+     "--set" "controller.strategy=plugin:${WORK}/build/predictive.so#predictive")
 # With Python (ARGUS_PYTHON): the installed argus runs a strategy written in Python from the
 # package installed beside it.
 file(GLOB installed_python "${WORK}/prefix/lib*/argus/python/argus/__init__.py")
