@@ -1,12 +1,12 @@
 """The example strategy beyond the paper's (examples/strategies/predictive.cpp), loaded by argus:
-its three variants are registered, and a camera it sends after her is sent where she really is.
+its variants are registered, and a camera it sends after her is sent where she really is.
 
 Each camera that joins the search for her is pointed at where the group's shared floor
 estimates and their motion model put her one second ahead (event `predictive_aimed`). On two
 seeds whose groups hold her at first, the first such aim must land within 3 m of where the
 ground truth (trajectories.csv) has her one second later: an aim built on a wrong calibration, a
-wrong unit, a lost note or a motion model that runs away would miss by far more (the stations's
-cameras are 10-40 m from her).
+wrong unit or a motion model that runs away would miss by far more (the station's cameras are
+10-40 m from her).
 
 Usage: predictive_aims_test.py ARGUS PLUGIN SCENARIO SCRATCH
 """
