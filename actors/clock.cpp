@@ -317,6 +317,10 @@ class clock_actor : public caf::event_based_actor {
   // complete up to it, and fails naming the worker.
   void lose_worker(const std::string& host, const std::string& participant) {
     if (finished_) return;
+    if (settings_.on_worker_loss == worker_loss::crash_nodes) {
+      crash_worker_nodes(host, participant);
+      return;
+    }
     stop_reason_ = fmt::format(
         "worker {} was lost during tick {} ({} unreachable); the outputs are complete up to "
         "tick {}",
@@ -331,6 +335,44 @@ class clock_actor : public caf::event_based_actor {
     finish();
   }
 
+  // `--on-worker-loss crash-nodes`: what the worker hosted leaves the barrier at once, as a
+  // crashed camera does, and the fault injector takes its cameras down in the next tick's
+  // faults phase (links, events). The tick in progress completes without them: what they
+  // acknowledged before the loss stays in it, so from this tick on the run is not one process's.
+  void crash_worker_nodes(const std::string& host, const std::string& participant) {
+    lost_worker lost{host, tick_, {}};
+    for (const auto& [id, e] : participants_)
+      if (e.info.host == host) lost.participants.push_back(id);
+    std::sort(lost.participants.begin(), lost.participants.end());
+    // A camera that recovered on the lost worker and has not joined yet never will.
+    pending_joins_.erase(std::remove_if(pending_joins_.begin(), pending_joins_.end(),
+                                        [&](const auto& j) { return j.second.host == host; }),
+                         pending_joins_.end());
+    spdlog::warn(
+        "clock: worker {} was lost during tick {} ({} unreachable); its {} participants go on "
+        "as crashed nodes (--on-worker-loss crash-nodes), so the run is the same as one "
+        "process's only up to tick {}",
+        host, tick_, participant, lost.participants.size(), tick_ - 1);
+    result_.lost_workers.push_back(fmt::format("{} at tick {}", host, tick_));
+    batches_.erase(host);
+    const bool in_phase = started_ && awaiting_ > 0;
+    holding_ = true;  // one phase step for all of them, once they are all gone
+    for (auto id : lost.participants) drop(id, /*expected=*/true);
+    holding_ = false;
+    if (auto injector = participants_.find(participant_ids::fault_injector);
+        injector != participants_.end()) {
+      send(injector->second.handle, std::move(lost));
+      // Its next faults phase: this tick's is over once any phase runs, and between ticks
+      // (phase_ past the last) the next tick has not begun.
+      book(injector->second, participant_ids::fault_injector,
+           phase_ < phase_count ? tick_ + 1 : tick_);
+    }
+    if (in_phase && awaiting_ == 0) {
+      ++phase_;
+      run_phases();
+    }
+  }
+
   void drop(std::uint64_t id, bool expected) {
     auto it = participants_.find(id);
     if (it == participants_.end()) return;
@@ -341,7 +383,7 @@ class clock_actor : public caf::event_based_actor {
     bool was_awaited = e.awaited;
     due_.erase(std::remove(due_.begin(), due_.end(), &e), due_.end());
     participants_.erase(it);
-    if (was_awaited && --awaiting_ == 0 && started_ && !finished_) {
+    if (was_awaited && --awaiting_ == 0 && started_ && !finished_ && !holding_) {
       ++phase_;
       run_phases();
     }
@@ -533,6 +575,8 @@ class clock_actor : public caf::event_based_actor {
   std::string stop_reason_;
   bool started_ = false;
   bool finished_ = false;
+  // Participants leave in a group (a lost worker's): the phase moves on once all have left.
+  bool holding_ = false;
 
   // Looked up on every ack and every wake-up: hashed, and node-based so due_ may point in.
   std::unordered_map<std::uint64_t, entry> participants_;

@@ -9,6 +9,7 @@
 
 #include "actors/pacing.hpp"
 #include "actors/scheduling_order.hpp"
+#include "actors/worker_loss.hpp"
 #include "caf/actor.hpp"
 #include "caf/fwd.hpp"
 
@@ -37,6 +38,10 @@ struct clock_settings {
   /// std::vector<batched_tick>)` a phase, and answer with one `std::vector<tick_ack>`: a tick
   /// costs two messages across the network per worker, not two per camera.
   std::map<std::string, caf::actor> sub_clocks;
+  /// What a lost worker does to the run. Under `worker_loss::crash_nodes` its participants
+  /// leave the barrier as retired, the run goes on, and the fault injector (the participant
+  /// `participant_ids::fault_injector`) gets a `lost_worker` and a turn in the next tick.
+  worker_loss on_worker_loss = worker_loss::end_run;
 };
 
 /// Whether a run with `threads` scheduler workers in `order` and `participants` participants
@@ -63,6 +68,8 @@ bool clock_on_own_thread(unsigned threads, std::size_t participants,
 ///   recorder has written everything.
 /// - `(retire_atom, uint64 id)`: a participant is about to be killed on purpose (a fault);
 ///   it leaves the barrier at once and its death is not reported as unexpected.
+/// A participant with a `host` that dies because its connection broke takes its whole worker
+/// with it: the run ends, or goes on without it (`clock_settings::on_worker_loss`).
 /// - `tick_ack` from participants, `(recorded_atom, int64 tick)` from the recorder.
 ///
 /// Each tick, for each phase in order, it sends `(tick_atom, int64 tick, uint8 phase, uint32

@@ -1,5 +1,6 @@
 #include "actors/fault_injector.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <optional>
@@ -17,6 +18,7 @@
 #include "config/enum_names.hpp"
 #include "config/ticks.hpp"
 #include "fmt/format.h"
+#include "fmt/ranges.h"
 #include "spdlog/spdlog.h"
 
 namespace argus::actors {
@@ -53,6 +55,9 @@ struct injector_state {
   // their attachments wait in `commands`, and no command goes out before every handle is in.
   // True: crashed again in the same turn, to be carried out once it exists.
   std::map<int, bool> spawning;
+  // Workers lost since the last turn (`--on-worker-loss crash-nodes`), and the cameras they took.
+  std::vector<lost_worker> lost;
+  std::set<int> lost_cameras;
 };
 
 using injector = caf::stateful_actor<injector_state>;
@@ -131,6 +136,7 @@ bool crash(injector* self, int camera) {
 // get it, and the turn's commands may go.
 void spawned_again(injector* self, int camera, caf::actor handle) {
   auto& st = self->state;
+  if (st.lost_cameras.count(camera) != 0) return;  // its worker's loss came first
   const bool crash_again = st.spawning[camera];
   st.spawning.erase(camera);
   st.net.cameras[camera] = handle;
@@ -149,6 +155,10 @@ void spawned_again(injector* self, int camera, caf::actor handle) {
 
 bool recover(injector* self, int camera) {
   auto& st = self->state;
+  if (st.lost_cameras.count(camera) != 0) {
+    spdlog::warn("faults: camera {} cannot recover: its worker was lost", camera);
+    return false;
+  }
   auto& slot = st.net.cameras[camera];
   if (slot || st.spawning.count(camera) != 0) return false;  // it did not go down, or is back
   for (const auto& cam : st.scenario.cameras) {
@@ -186,6 +196,47 @@ bool recover(injector* self, int camera) {
     return true;
   }
   return false;
+}
+
+// The cameras of a lost worker (those it hosted, up or already down) go down as crashed ones
+// do, without a kill (they are gone already), and never come back. The links that outlive
+// them (the coordinator's, docs/distributed.md) hear they are down; those the worker hosted
+// went with it, and are told nothing: nothing would answer.
+void take_down_lost(injector* self, tick_context& ctx) {
+  auto& st = self->state;
+  for (const auto& lost : st.lost) {
+    const std::set<std::uint64_t> gone(lost.participants.begin(), lost.participants.end());
+    std::vector<int> cameras;
+    for (const auto& [camera, host] : st.net.host_names)
+      if (host == lost.host) cameras.push_back(camera);
+    spdlog::warn("faults: worker {} was lost in tick {}: cameras {} are down for good", lost.host,
+                 lost.tick, fmt::join(cameras, ", "));
+    link_command cmd;
+    cmd.op = link_op::node_down;
+    for (const int camera : cameras) {
+      st.lost_cameras.insert(camera);
+      auto& handle = st.net.cameras[camera];
+      const bool was_up = static_cast<bool>(handle) || st.spawning.count(camera) != 0;
+      handle = caf::actor{};
+      // Recovering on that worker: its handle will never come, nor its attachments go.
+      if (st.spawning.erase(camera) != 0)
+        st.commands.erase(std::remove_if(st.commands.begin(), st.commands.end(),
+                                         [&](const auto& c) {
+                                           return c.second.op == link_op::attach &&
+                                                  c.second.node == camera && !c.second.handle;
+                                         }),
+                          st.commands.end());
+      cmd.node = camera;
+      for (const auto& [neighbour, link] : st.net.links[camera])
+        if (gone.count(link.participant) == 0) st.commands.emplace_back(link.handle, cmd);
+      ctx.emit(events::fault_event{.fault = "worker_lost",
+                                   .camera = camera,
+                                   .peer = std::nullopt,
+                                   .random = false,
+                                   .applied = was_up});
+    }
+  }
+  st.lost.clear();
 }
 
 void perform(injector* self, tick_context& ctx, const planned& p) {
@@ -319,6 +370,7 @@ caf::behavior fault_injector(injector* self, config::scenario scenario, caf::act
         auto& st = self->state;
         st.tick = tick;
         tick_context ctx(st.info.id, st.info.name, tick, st.info.tick_phase);
+        take_down_lost(self, ctx);
         while (st.next < st.plan.size() && st.plan[st.next].tick <= tick)
           perform(self, ctx, st.plan[st.next++]);
         if (st.live) take_live_commands(self, ctx);
@@ -328,6 +380,7 @@ caf::behavior fault_injector(injector* self, config::scenario scenario, caf::act
         send_commands(self);
         ack_when_done(self);
       },
+      [self](lost_worker& lost) { self->state.lost.push_back(std::move(lost)); },
   };
 }
 

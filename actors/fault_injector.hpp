@@ -47,6 +47,9 @@ participant_info fault_injector_participant(const config::scenario& scenario, bo
 /// - `loss_burst`: sets every link of `camera` to `loss_probability` for `length`;
 /// - `delay_spike`: every message sent on a link of `camera` for `length` takes `delay` longer;
 /// - `recover`: the second half of a crash_and_recover on its own (`node_recovered`).
+/// - a `lost_worker` from the clock (`--on-worker-loss crash-nodes`): at the start of its next
+///   turn, each of the worker's cameras is down as a crashed one is (fault `worker_lost`), and
+///   never recovers.
 /// Every action is logged as a `fault` event. Commands to links are requests, sent in the
 /// order they were made once the turn's crashed cameras have ended, and the injector's
 /// acknowledgement waits for every answer: a link's effects on the nodes (hand-overs,

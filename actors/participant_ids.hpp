@@ -17,6 +17,11 @@ constexpr std::uint64_t camera(int camera_id) noexcept {
   return 1'000'000ULL + static_cast<std::uint64_t>(camera_id);
 }
 
+/// The scenario id of the camera whose participant id is `id`, or 0 when `id` is no camera's.
+constexpr int camera_of(std::uint64_t id) noexcept {
+  return id > 1'000'000ULL && id < 2'000'000'000ULL ? static_cast<int>(id - 1'000'000ULL) : 0;
+}
+
 /// The fault injector.
 inline constexpr std::uint64_t fault_injector = 2;
 

@@ -88,6 +88,7 @@ nlohmann::json summary_json(const recorder_state& st, const run_result& r) {
   j["speed_ratio"] = r.wall_seconds > 0.0 ? r.virtual_seconds / r.wall_seconds : 0.0;
   j["participants"] = r.participants;
   j["unexpected_down"] = r.unexpected_down;
+  if (!r.lost_workers.empty()) j["lost_workers"] = r.lost_workers;
   if (!r.failure.empty()) j["failure"] = r.failure;
   j["events_total"] = r.events_total;
   j["events_by_kind"] = r.events_by_kind;

@@ -1,6 +1,8 @@
 #include "actors/remote_network.hpp"
 
 #include <map>
+#include <memory>
+#include <optional>
 #include <stdexcept>
 #include <tuple>
 #include <utility>
@@ -88,19 +90,28 @@ void greet_workers(caf::actor_system& system, const std::vector<worker_contact>&
 network_directory spawn_remote_network(caf::actor_system& system, const config::scenario& scenario,
                                        const protocol::topology& topo, const caf::actor& clock,
                                        const std::vector<worker_contact>& workers,
-                                       worker_setup setup) {
+                                       worker_setup setup, worker_loss on_loss) {
   const auto timeout = std::chrono::milliseconds(worker_setup_timeout);
   const auto where = place_cameras(scenario, workers.size());
-  // Each worker's links, in topology order, and where their handles go.
+  // Each worker's links, in topology order, and where their handles go; the coordinator's
+  // (`--on-worker-loss crash-nodes`) are spawned here.
   std::vector<std::vector<link_placement>> links_of(workers.size());
+  std::vector<std::optional<std::size_t>> host_of_link;
+  std::vector<caf::actor> handles(topo.links().size());
+  std::shared_ptr<const protocol::link_model> model;
   for (std::size_t i = 0; i < topo.links().size(); ++i) {
     auto [a, b] = topo.links()[i];
-    links_of[place_link(where, a, b)].push_back({i, a, b});
+    host_of_link.push_back(place_link(where, a, b, on_loss));
+    if (host_of_link.back()) {
+      links_of[*host_of_link.back()].push_back({i, a, b});
+      continue;
+    }
+    if (!model) model = make_link_model(scenario);
+    handles[i] = spawn_link(system, scenario, model, i, a, b);
   }
   network_directory net;
   caf::scoped_actor self{system};
   std::vector<std::pair<caf::actor, participant_info>> links;
-  std::vector<caf::actor> handles(topo.links().size());
   const auto spawned_links =
       ask_all<std::vector<caf::actor>>(self, workers, timeout, "setting up", [&](std::size_t w) {
         auto mine = setup;
@@ -117,7 +128,7 @@ network_directory spawn_remote_network(caf::actor_system& system, const config::
   for (std::size_t i = 0; i < topo.links().size(); ++i) {
     auto [a, b] = topo.links()[i];
     auto info = link_participant(i, a, b);
-    info.host = workers[place_link(where, a, b)].name;
+    if (host_of_link[i]) info.host = workers[*host_of_link[i]].name;
     net.links[a][b] = attached_link{info.id, handles[i]};
     net.links[b][a] = attached_link{info.id, handles[i]};
     links.emplace_back(handles[i], info);
@@ -161,7 +172,7 @@ network_directory spawn_remote_network(caf::actor_system& system, const config::
 }
 
 void finish_workers(caf::actor_system& system, const std::vector<worker_contact>& workers,
-                    eval::observation_log& log, std::chrono::milliseconds timeout) {
+                    eval::observation_log& log, std::chrono::milliseconds timeout, bool streamed) {
   caf::scoped_actor self{system};
   for (const auto& w : workers) {
     // A worker already lost (the run failed for it) is skipped at once rather than waited for:
@@ -171,7 +182,11 @@ void finish_workers(caf::actor_system& system, const std::vector<worker_contact>
     self->receive([&](caf::down_msg&) { lost = true; },
                   caf::after(std::chrono::seconds(0)) >> [] {});
     if (lost) {
-      spdlog::warn("worker {} is gone: its cameras' frames are not in the evaluation", w.name);
+      if (streamed)
+        spdlog::warn("worker {} is gone: its cameras' frames up to its loss are in the evaluation",
+                     w.name);
+      else
+        spdlog::warn("worker {} is gone: its cameras' frames are not in the evaluation", w.name);
       continue;
     }
     self->demonitor(w.host);

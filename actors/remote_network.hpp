@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "actors/fault_injector.hpp"
+#include "actors/worker_loss.hpp"
 #include "actors/worker_placement.hpp"
 #include "actors/worker_protocol.hpp"
 #include "caf/actor.hpp"
@@ -32,19 +33,23 @@ void greet_workers(caf::actor_system& system, const std::vector<worker_contact>&
 
 /// `spawn_network` for a distributed run: the same links and camera nodes, attached and joined
 /// to `clock` in the same order, but spawned by the workers, each camera on the worker
-/// `place_cameras` gives it (`scenario.placement`) and each link on its first camera's. `setup`
+/// `place_cameras` gives it (`scenario.placement`) and each link where `place_link` puts it
+/// (its first camera's worker, or here when `on_loss` keeps the run going). `setup`
 /// carries the scenario and its files; `anchor` lives as long as the run. The directory's `hosts`
 /// says where each camera is, so a camera that recovers from a crash comes back there. Throws
 /// std::runtime_error naming the worker that refused or did not answer.
 network_directory spawn_remote_network(caf::actor_system& system, const config::scenario& scenario,
                                        const protocol::topology& topo, const caf::actor& clock,
                                        const std::vector<worker_contact>& workers,
-                                       worker_setup setup);
+                                       worker_setup setup,
+                                       worker_loss on_loss = worker_loss::end_run);
 
 /// Once the run is over: adds what every worker's cameras recorded to `log`, and tells each
 /// worker to end what it hosted. A worker that does not answer within `timeout` is skipped
-/// with a warning (the run has already failed when that happens).
+/// with a warning (the run has already failed when that happens, or, when the workers
+/// `streamed` their logs every tick, went on without it).
 void finish_workers(caf::actor_system& system, const std::vector<worker_contact>& workers,
-                    eval::observation_log& log, std::chrono::milliseconds timeout);
+                    eval::observation_log& log, std::chrono::milliseconds timeout,
+                    bool streamed = false);
 
 }  // namespace argus::actors

@@ -18,6 +18,9 @@ struct run_result {
   std::uint64_t participants = 0;
   /// Participants that died without being retired by a fault (names, in order noticed).
   std::vector<std::string> unexpected_down;
+  /// Workers lost during a run that went on without them (`--on-worker-loss crash-nodes`),
+  /// each as "HOST:PORT at tick T".
+  std::vector<std::string> lost_workers;
   std::uint64_t events_total = 0;
   std::map<std::string, std::uint64_t> events_by_kind;
   /// Message fates per link ("link/1-2") and kind, from the links' end-of-run reports.
@@ -30,7 +33,7 @@ struct run_result {
 template <class Inspector>
 typename Inspector::result_type inspect(Inspector& f, run_result& x) {
   return f(x.ticks, x.virtual_seconds, x.wall_seconds, x.participants, x.unexpected_down,
-           x.events_total, x.events_by_kind, x.links, x.failure);
+           x.lost_workers, x.events_total, x.events_by_kind, x.links, x.failure);
 }
 
 }  // namespace argus::actors

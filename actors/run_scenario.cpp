@@ -92,6 +92,9 @@ worker_setup setup_for_workers(const config::scenario& scenario, const run_optio
     setup.sensor_model_text = config::read_whole_file(sensor_model_path(scenario));
   setup.with_visible = options.mot;
   setup.with_poses = options.video;
+  // A worker that may be lost mid-run hands its log over every tick: the evaluation keeps
+  // its cameras' frames up to the loss.
+  setup.stream_log = options.on_worker_loss == worker_loss::crash_nodes;
   setup.coordinator = std::move(anchor);
   return setup;
 }
@@ -183,6 +186,11 @@ run_outcome run_scenario(const config::scenario& scenario, const run_options& op
     world_settings.picks_gathered = [log](const std::vector<eval::task_origin>& picks) {
       for (const auto& p : picks) log->add_origin_if_new(p);
     };
+    world_settings.on_worker_loss = options.on_worker_loss;
+    if (options.on_worker_loss == worker_loss::crash_nodes)
+      world_settings.log_gathered = [log](eval::observation_log::contents share) {
+        log->add_worker_share(std::move(share));
+      };
   }
   cameras_world->board->subscribe(
       [log](const std::shared_ptr<const world::snapshot>& frame) { sample_targets(*log, *frame); });
@@ -259,6 +267,7 @@ run_outcome run_scenario(const config::scenario& scenario, const run_options& op
   cs.own_thread = clock_on_own_thread(threads, scenario.cameras.size());
   // Each worker ticks its own cameras and answers for them at once.
   for (const auto& w : workers) cs.sub_clocks[w.name] = w.host;
+  cs.on_worker_loss = options.on_worker_loss;
   auto clock = spawn_clock(system, cs, recorder, progress);
 
   // Joins and link attachments go out from this thread, in this order, before `start`:
@@ -274,7 +283,8 @@ run_outcome run_scenario(const config::scenario& scenario, const run_options& op
   } else {
     try {
       net = spawn_remote_network(system, scenario, topo, clock, workers,
-                                 setup_for_workers(scenario, options, anchor));
+                                 setup_for_workers(scenario, options, anchor),
+                                 options.on_worker_loss);
     } catch (...) {
       // Nothing has started: end what did spawn, here and on the workers, then say why.
       for (const auto& a : {clock, recorder, progress, anchor})
@@ -308,7 +318,8 @@ run_outcome run_scenario(const config::scenario& scenario, const run_options& op
   // The render workers are detached threads linked to the front: end them with it.
   if (pool.front) caf::anon_send_exit(pool.front, caf::exit_reason::user_shutdown);
   if (!workers.empty()) {
-    finish_workers(system, workers, *log, std::chrono::seconds(10));
+    finish_workers(system, workers, *log, std::chrono::seconds(10),
+                   options.on_worker_loss == worker_loss::crash_nodes);
     caf::anon_send_exit(anchor, caf::exit_reason::user_shutdown);
   }
   if (!failure.empty()) {

@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "actors/run_result.hpp"
+#include "actors/worker_loss.hpp"
 #include "config/scenario.hpp"
 #include "eval/metrics.hpp"
 #include "live/session.hpp"
@@ -44,6 +45,8 @@ struct run_options {
   /// A distributed run (docs/distributed.md): the workers that host the camera nodes and their
   /// links. Null: everything runs in this process, and no network layer is loaded.
   std::shared_ptr<const class worker_pool> workers;
+  /// What losing one of `workers` mid-run does (`--on-worker-loss`).
+  worker_loss on_worker_loss = worker_loss::end_run;
 };
 
 /// Runs a validated scenario to its end on a CAF scheduler with `scenario.run.threads` worker

@@ -19,6 +19,7 @@
 #include "actors/tick_ack.hpp"
 #include "actors/wire_log.hpp"
 #include "actors/wire_world.hpp"
+#include "actors/worker_loss.hpp"
 #include "actors/worker_protocol.hpp"
 #include "actors/world_update.hpp"
 #include "caf/all.hpp"
@@ -54,6 +55,7 @@ CAF_ADD_TYPE_ID(argus, (std::vector<argus::eval::task_origin>))
 CAF_ADD_TYPE_ID(argus, (argus::eval::observation_log::contents))
 CAF_ADD_TYPE_ID(argus, (argus::actors::worker_setup))
 CAF_ADD_TYPE_ID(argus, (argus::actors::worker_gather))
+CAF_ADD_TYPE_ID(argus, (argus::actors::lost_worker))
 CAF_ADD_TYPE_ID(argus, (argus::actors::camera_placement))
 CAF_ADD_TYPE_ID(argus, (std::vector<argus::actors::camera_placement>))
 

@@ -91,6 +91,7 @@ struct hosted_run {
   config::scenario scenario;
   std::unique_ptr<setup_files> files;
   std::shared_ptr<eval::observation_log> log;
+  bool stream_log = false;  // worker_setup::stream_log
   std::shared_ptr<pick_outbox> picks;
   std::shared_ptr<camera_world> world;
   std::vector<caf::actor> spawned;
@@ -141,6 +142,7 @@ caf::result<std::vector<caf::actor>> set_up(host_actor* self, worker_setup& setu
       model = vision::load_sensor_model(
           run.files->write("sensor_model.yaml", setup.sensor_model_text).string());
     run.log = std::make_shared<eval::observation_log>(setup.with_visible);
+    run.stream_log = setup.stream_log;
     run.picks = std::make_shared<pick_outbox>();
     run.world = make_camera_world(run.scenario, station, std::move(model),
                                   std::max<std::size_t>(1, st.render_threads), run.log);
@@ -270,6 +272,7 @@ caf::behavior worker_host(host_actor* self, std::string name, std::size_t render
         if (const auto& poses = st.run->world->poses)
           for (const auto& [camera, e] : poses->latest())
             out.poses.push_back({camera, e.tick, e.pose});
+        if (st.run->stream_log) out.log = st.run->log->take_recorded();
         return out;
       },
       [self](board_atom, const serialized_delta& delta,

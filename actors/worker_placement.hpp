@@ -2,9 +2,11 @@
 
 #include <cstddef>
 #include <map>
+#include <optional>
 #include <utility>
 #include <vector>
 
+#include "actors/worker_loss.hpp"
 #include "config/scenario.hpp"
 
 namespace argus::actors {
@@ -15,9 +17,15 @@ namespace argus::actors {
 /// `scenario.placement.policy` says how (docs/distributed.md, "Placement").
 std::map<int, std::size_t> place_cameras(const config::scenario& scenario, std::size_t workers);
 
-/// Which worker hosts the link between cameras `a` and `b`: camera `a`'s.
-inline std::size_t place_link(const std::map<int, std::size_t>& cameras, int a, int /*b*/) {
-  return cameras.at(a);
+/// Which worker hosts the link between cameras `a` and `b`: camera `a`'s, or none (the
+/// coordinator) when the run survives lost workers and `b` is on another worker. A link must
+/// outlive each camera whose hand-overs it owes: a lost worker then takes with it only links
+/// whose two ends it also took (docs/distributed.md, "A lost worker").
+inline std::optional<std::size_t> place_link(const std::map<int, std::size_t>& cameras, int a,
+                                             int b, worker_loss on_loss) {
+  const auto worker = cameras.at(a);
+  if (on_loss == worker_loss::crash_nodes && cameras.at(b) != worker) return std::nullopt;
+  return worker;
 }
 
 }  // namespace argus::actors

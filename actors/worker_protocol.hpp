@@ -38,6 +38,10 @@ struct worker_setup {
   bool with_visible = false;
   /// Whether the cameras leave their poses for the coordinator's video (`--video`).
   bool with_poses = false;
+  /// Whether the worker hands its cameras' log over with every gather (`worker_gather::log`)
+  /// rather than all at the end: a run that survives a lost worker keeps its frames up to the
+  /// loss.
+  bool stream_log = false;
   std::vector<link_placement> links;
   /// An actor that lives as long as the coordinator's run: when it goes (the run ended, the
   /// coordinator died or its connection broke), the worker ends what it hosted.
@@ -47,7 +51,7 @@ struct worker_setup {
 template <class Inspector>
 typename Inspector::result_type inspect(Inspector& f, worker_setup& x) {
   return f(x.scenario_yaml, x.layout_text, x.sensor_model_text, x.with_visible, x.with_poses,
-           x.links, x.coordinator);
+           x.stream_log, x.links, x.coordinator);
 }
 
 /// One of a camera's links, as the camera node is attached to it (attached_link).
@@ -87,15 +91,17 @@ typename Inspector::result_type inspect(Inspector& f, pose_record& x) {
 }
 
 /// A worker's answer to `gather_atom`: the picks its cameras made since it was last asked, by
-/// task, and, in a run with `--video`, each of its cameras' latest pose.
+/// task; in a run with `--video`, each of its cameras' latest pose; with
+/// `worker_setup::stream_log`, what its cameras recorded since it was last asked.
 struct worker_gather {
   std::vector<eval::task_origin> picks;
   std::vector<pose_record> poses;
+  eval::observation_log::contents log;
 };
 
 template <class Inspector>
 typename Inspector::result_type inspect(Inspector& f, worker_gather& x) {
-  return f(x.picks, x.poses);
+  return f(x.picks, x.poses, x.log);
 }
 
 }  // namespace argus::actors

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <fstream>
+#include <map>
 #include <optional>
+#include <set>
 #include <stdexcept>
 #include <system_error>
 
@@ -66,15 +68,22 @@ struct coordinator_setup {
   std::vector<caf::actor> remote_boards;
   std::function<void(const std::vector<eval::task_origin>&)> picks_gathered;
   std::function<void(const std::vector<pose_record>&)> poses_gathered;
+  std::function<void(eval::observation_log::contents)> log_gathered;
+  worker_loss on_worker_loss = worker_loss::end_run;
 };
 
-// A distributed tick in progress: the answers still awaited from the workers, then the ack.
+// A distributed tick in progress: the workers whose answers are still awaited, then the ack.
 struct remote_exchange {
+  enum class stage : std::uint8_t { idle, gathering, publishing };
+  stage now = stage::idle;
   std::optional<tick_context> ctx;
   caf::actor clock;
   std::vector<std::pair<mail_stamp, partition_report>> due;
   std::vector<eval::task_origin> picks;
-  std::size_t waiting = 0;
+  // What the workers' cameras recorded since the last gather, by worker, added in the
+  // workers' order once all have answered.
+  std::map<std::size_t, eval::observation_log::contents> logs;
+  std::set<caf::actor_addr> awaited;
 };
 
 struct world_coordinator_state {
@@ -180,66 +189,117 @@ void step_world(caf::stateful_actor<world_coordinator_state>* self, tick_context
   }
 }
 
-// The workers' answers: a failed one means the worker is gone, and the clock ends the run for
-// it (it monitors the worker's cameras), so this tick is never acknowledged. A worker that
-// answered with an error instead (a snapshot it could not rebuild) ends the run: without the
-// world the clock cannot go on.
-void worker_failed(caf::stateful_actor<world_coordinator_state>* self, const caf::error& err) {
+using coordinator_actor = caf::stateful_actor<world_coordinator_state>;
+
+void worker_answered(coordinator_actor* self, const caf::actor_addr& board);
+
+// A worker is gone (`--on-worker-loss crash-nodes`): the world goes on without it, and the
+// tick in progress stops waiting for its answer. The clock takes its cameras down.
+void lose_board(coordinator_actor* self, const caf::actor_addr& board) {
+  auto& boards = self->state.setup->remote_boards;
+  auto it = std::find_if(boards.begin(), boards.end(),
+                         [&](const caf::actor& b) { return b.address() == board; });
+  if (it == boards.end()) return;
+  boards.erase(it);
+  spdlog::warn("world: a worker is gone; {} left to share the world with", boards.size());
+  worker_answered(self, board);
+}
+
+// A worker's failed answer. Unless the run survives lost workers, a worker that is gone ends
+// the run through the clock (it monitors the worker's cameras), so this tick is never
+// acknowledged. A worker that answered with an error instead (a snapshot it could not
+// rebuild) ends the run: without the world the clock cannot go on.
+void worker_failed(coordinator_actor* self, const caf::actor_addr& board, const caf::error& err) {
+  if (err != caf::sec::runtime_error &&
+      self->state.setup->on_worker_loss == worker_loss::crash_nodes) {
+    lose_board(self, board);
+    return;
+  }
   spdlog::error("world: a worker did not answer: {}", self->system().render(err));
   if (err == caf::sec::runtime_error) self->quit(err);
 }
 
-void publish_to_workers(caf::stateful_actor<world_coordinator_state>* self) {
+void step_and_publish(coordinator_actor* self);
+
+void publish_to_workers(coordinator_actor* self) {
   auto& st = self->state;
   auto& ex = st.exchange;
-  ex.waiting = st.setup->remote_boards.size();
+  ex.now = remote_exchange::stage::publishing;
   auto delta = delta_between(st.published.get(), *st.current);
   const auto bytes = serialize(delta);
   st.published = st.current;
+  for (const auto& board : st.setup->remote_boards) ex.awaited.insert(board.address());
   for (const auto& board : st.setup->remote_boards)
     self->request(board, caf::infinite, board_atom_v, bytes, ex.picks)
-        .then(
-            [self](done_atom) {
-              auto& ex = self->state.exchange;
-              if (--ex.waiting != 0) return;
-              self->send(ex.clock, std::move(*ex.ctx).finish());
-              ex.ctx.reset();
-              ex.clock = caf::actor{};
-              ex.picks.clear();
-            },
-            [self](caf::error& err) { worker_failed(self, err); });
+        .then([self, addr = board.address()](done_atom) { worker_answered(self, addr); },
+              [self, addr = board.address()](caf::error& err) { worker_failed(self, addr, err); });
+  if (ex.awaited.empty()) worker_answered(self, caf::actor_addr{});
 }
 
-void gather_picks(caf::stateful_actor<world_coordinator_state>* self, tick_context ctx,
-                  caf::actor clock, std::vector<std::pair<mail_stamp, partition_report>> due) {
+void gather_picks(coordinator_actor* self, tick_context ctx, caf::actor clock,
+                  std::vector<std::pair<mail_stamp, partition_report>> due) {
   auto& st = self->state;
   auto& ex = st.exchange;
+  ex.now = remote_exchange::stage::gathering;
   ex.ctx.emplace(std::move(ctx));
   ex.clock = std::move(clock);
   ex.due = std::move(due);
-  ex.waiting = st.setup->remote_boards.size();
-  for (const auto& board : st.setup->remote_boards)
-    self->request(board, caf::infinite, gather_atom_v)
+  const auto boards = st.setup->remote_boards;
+  for (const auto& board : boards) ex.awaited.insert(board.address());
+  for (std::size_t w = 0; w < boards.size(); ++w)
+    self->request(boards[w], caf::infinite, gather_atom_v)
         .then(
-            [self](worker_gather& gathered) {
+            [self, w, addr = boards[w].address()](worker_gather& gathered) {
               auto& st = self->state;
               auto& ex = st.exchange;
               ex.picks.insert(ex.picks.end(), gathered.picks.begin(), gathered.picks.end());
               // Each camera is on one worker: the order of the workers' answers cannot matter.
               if (st.setup->poses_gathered) st.setup->poses_gathered(gathered.poses);
-              if (--ex.waiting != 0) return;
-              // Whatever order the workers answered in.
-              std::sort(ex.picks.begin(), ex.picks.end(),
-                        [](const auto& a, const auto& b) { return a.task < b.task; });
-              if (st.setup->picks_gathered) st.setup->picks_gathered(ex.picks);
-              step_world(self, *ex.ctx, std::move(ex.due));
-              publish_to_workers(self);
+              if (st.setup->log_gathered) ex.logs[w] = std::move(gathered.log);
+              worker_answered(self, addr);
             },
-            [self](caf::error& err) { worker_failed(self, err); });
+            [self, addr = boards[w].address()](caf::error& err) {
+              worker_failed(self, addr, err);
+            });
+  if (ex.awaited.empty()) worker_answered(self, caf::actor_addr{});
 }
 
-caf::behavior world_coordinator(caf::stateful_actor<world_coordinator_state>* self,
-                                coordinator_setup setup) {
+// Every worker still there has answered the gather: the world steps and is published.
+void step_and_publish(coordinator_actor* self) {
+  auto& st = self->state;
+  auto& ex = st.exchange;
+  // Whatever order the workers answered in.
+  std::sort(ex.picks.begin(), ex.picks.end(),
+            [](const auto& a, const auto& b) { return a.task < b.task; });
+  if (st.setup->picks_gathered) st.setup->picks_gathered(ex.picks);
+  for (auto& [w, log] : ex.logs) st.setup->log_gathered(std::move(log));
+  ex.logs.clear();
+  step_world(self, *ex.ctx, std::move(ex.due));
+  publish_to_workers(self);
+}
+
+// `board` answered, or is gone: once none is awaited, the exchange moves on.
+void worker_answered(coordinator_actor* self, const caf::actor_addr& board) {
+  auto& ex = self->state.exchange;
+  if (ex.awaited.erase(board) == 0 && board) return;  // not awaited (answered, or lost, before)
+  if (!ex.awaited.empty()) return;
+  switch (ex.now) {
+    case remote_exchange::stage::idle:
+      return;
+    case remote_exchange::stage::gathering:
+      step_and_publish(self);
+      return;
+    case remote_exchange::stage::publishing:
+      ex.now = remote_exchange::stage::idle;
+      self->send(ex.clock, std::move(*ex.ctx).finish());
+      ex.ctx.reset();
+      ex.clock = caf::actor{};
+      ex.picks.clear();
+      return;
+  }
+}
+
+caf::behavior world_coordinator(coordinator_actor* self, coordinator_setup setup) {
   auto& st = self->state;
   st.info = world_coordinator_participant();
   st.current = setup.initial;
@@ -255,6 +315,12 @@ caf::behavior world_coordinator(caf::stateful_actor<world_coordinator_state>* se
     }
     self->quit(msg.reason);
   });
+  // Under `--on-worker-loss crash-nodes` a worker that goes is noticed here too: an answer it
+  // owed may never come.
+  if (st.setup->on_worker_loss == worker_loss::crash_nodes) {
+    for (const auto& board : st.setup->remote_boards) self->monitor(board);
+    self->set_down_handler([self](caf::down_msg& msg) { lose_board(self, msg.source); });
+  }
   return {
       [self](world_report_atom, const mail_stamp& stamp, partition_report& report) {
         self->state.reports.put(stamp, std::move(report));
@@ -327,7 +393,8 @@ world_actors spawn_world(caf::actor_system& system, world_run_settings settings)
                         snapshot0, settings.end_tick, std::move(trajectories), partitions,
                         std::move(settings.snapshot_observers), settings.board,
                         std::move(settings.remote_boards), std::move(settings.picks_gathered),
-                        std::move(settings.poses_gathered)});
+                        std::move(settings.poses_gathered), std::move(settings.log_gathered),
+                        settings.on_worker_loss});
   for (std::size_t i = 0; i < partitions.size(); ++i) {
     caf::anon_send(partitions[i], world_attach_atom_v, coordinator);
     out.participants.emplace_back(partitions[i], crowd_partition_participant(i));

@@ -9,9 +9,11 @@
 
 #include "actors/participant_info.hpp"
 #include "actors/snapshot_board.hpp"
+#include "actors/worker_loss.hpp"
 #include "actors/worker_protocol.hpp"
 #include "caf/actor.hpp"
 #include "caf/fwd.hpp"
+#include "eval/observation_log.hpp"
 #include "eval/records.hpp"
 #include "world/crowd.hpp"
 #include "world/station.hpp"
@@ -48,6 +50,11 @@ struct world_run_settings {
   /// The workers' cameras' poses, gathered with their picks when the run records video; null
   /// for none.
   std::function<void(const std::vector<pose_record>&)> poses_gathered;
+  /// What the workers' cameras recorded since the last gather (`worker_setup::stream_log`),
+  /// one worker's share at a time, in the workers' order; null when the logs come at the end.
+  std::function<void(eval::observation_log::contents)> log_gathered;
+  /// A lost worker under `worker_loss::crash_nodes`: the world goes on with the others.
+  worker_loss on_worker_loss = worker_loss::end_run;
 };
 
 /// The actors of a run's crowd, to join to the clock.

@@ -42,6 +42,7 @@ struct run_arguments {
   std::vector<std::string> tasks;
   std::optional<std::string> commands;
   std::optional<std::string> workers;
+  std::string on_worker_loss = "end-run";
   tls_arguments tls;
 };
 
@@ -73,6 +74,7 @@ void print_outcome(const run_arguments& args, const config::scenario& s,
     j["events_total"] = r.events_total;
     j["events_by_kind"] = r.events_by_kind;
     j["unexpected_down"] = r.unexpected_down;
+    if (!r.lost_workers.empty()) j["lost_workers"] = r.lost_workers;
     j["events"] = (outcome.output_dir / "events.jsonl").string();
     j["summary"] = (outcome.output_dir / "summary.json").string();
     j["metrics"] = (outcome.output_dir / "metrics.json").string();
@@ -99,6 +101,8 @@ void print_outcome(const run_arguments& args, const config::scenario& s,
   if (report) std::cout << "  report:  " << report->string() << '\n';
   if (!r.unexpected_down.empty())
     std::cout << "  participants that died unexpectedly: " << r.unexpected_down.size() << '\n';
+  for (const auto& lost : r.lost_workers)
+    std::cout << "  worker lost, its cameras crashed: " << lost << '\n';
 }
 
 // `--workers HOST:PORT,...`: the pool a distributed run connects to; null for a run in this
@@ -143,6 +147,11 @@ void add_run_command(CLI::App& app, int& result) {
   cmd->add_option("--workers", args->workers,
                   "Run the cameras and their links on these workers (argus worker), "
                   "HOST:PORT,...; placement.policy says how (docs/distributed.md)");
+  cmd->add_option("--on-worker-loss", args->on_worker_loss,
+                  "What a worker lost mid-run does: end-run (the run ends with its last whole "
+                  "tick, exit 1) or crash-nodes (its cameras become crashed nodes and the run "
+                  "goes on); see docs/distributed.md")
+      ->check(CLI::IsMember({"end-run", "crash-nodes"}));
   add_tls_options(cmd, args->tls, "coordinator", "worker");
   cmd->add_option("--commands", args->commands,
                   "Replay the operator's commands of a live run (DIR/commands.yaml of argus "
@@ -169,6 +178,10 @@ void add_run_command(CLI::App& app, int& result) {
     actors::run_options options;
     try {
       options.workers = workers_of(*args);
+      if (args->on_worker_loss == "crash-nodes") {
+        if (!options.workers) throw std::invalid_argument("--on-worker-loss is for --workers");
+        options.on_worker_loss = actors::worker_loss::crash_nodes;
+      }
     } catch (const std::invalid_argument& e) {
       std::cerr << "argus run: " << e.what() << '\n';
       result = bad_input;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <iterator>
+#include <utility>
 
 #include "world/snapshot.hpp"
 
@@ -85,16 +86,32 @@ observation_log::contents observation_log::take() {
   return out;
 }
 
+observation_log::contents observation_log::take_recorded() {
+  std::lock_guard<std::mutex> guard(mutex_);
+  contents out;
+  out.frames = std::exchange(data_.frames, {});
+  out.sent = std::exchange(data_.sent, {});
+  out.sent_by_tick = std::exchange(data_.sent_by_tick, {});
+  out.sent_after_cancel = std::exchange(data_.sent_after_cancel, {});
+  out.origins = data_.origins;
+  std::sort(out.origins.begin(), out.origins.end(),
+            [](const auto& a, const auto& b) { return a.task < b.task; });
+  return out;
+}
+
 void observation_log::add_worker_share(contents part) {
   for (const auto& o : part.origins) add_origin_if_new(o);
   std::lock_guard<std::mutex> guard(mutex_);
   for (auto& [camera, frames] : part.frames) {
     auto& mine = data_.frames[camera];
+    const auto before = static_cast<std::ptrdiff_t>(mine.size());
     mine.insert(mine.end(), std::make_move_iterator(frames.begin()),
                 std::make_move_iterator(frames.end()));
     // A camera crashed and recovered may have frames from two hosts: keep them in tick order.
-    std::stable_sort(mine.begin(), mine.end(),
-                     [](const auto& a, const auto& b) { return a.tick < b.tick; });
+    // Each share is in tick order already, and a worker that hands its share over every tick
+    // only appends: merging costs nothing then.
+    std::inplace_merge(mine.begin(), mine.begin() + before, mine.end(),
+                       [](const auto& a, const auto& b) { return a.tick < b.tick; });
   }
   for (const auto& [key, count] : part.sent) data_.sent[key] += count;
   for (const auto& [task, by_tick] : part.sent_by_tick)

@@ -61,6 +61,10 @@ class observation_log {
     std::map<std::pair<std::uint32_t, std::string>, std::uint64_t> sent_after_cancel;
   };
   contents take();
+  /// What a worker hands over while its run goes on (actors::worker_setup::stream_log): the
+  /// frames and message counts recorded since the last call, and every pick known. The picks
+  /// and cancellations stay: later frames are recorded against them.
+  contents take_recorded();
   /// Adds what a worker's cameras recorded (its `take()`): their frames, the picks not known
   /// here yet, and the messages they counted. Samples and cancellations are the coordinator's.
   void add_worker_share(contents part);

@@ -134,9 +134,10 @@ struct fault_event {
   std::optional<int> peer;
   bool random = false;
   bool applied = false;
-  /// Whether it took its camera down (an applied crash or crash_and_recover).
+  /// Whether it took its camera down (an applied crash or crash_and_recover, or the loss of
+  /// the worker that hosted it under `--on-worker-loss crash-nodes`).
   bool takes_camera_down() const {
-    return applied && (fault == "crash" || fault == "crash_and_recover");
+    return applied && (fault == "crash" || fault == "crash_and_recover" || fault == "worker_lost");
   }
   template <class F>
   void members(F&& f) {

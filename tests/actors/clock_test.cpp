@@ -8,6 +8,8 @@
 
 #include "actors/participant_ids.hpp"
 #include "actors/system_config.hpp"
+#include "actors/tick_context.hpp"
+#include "actors/worker_loss.hpp"
 #include "caf/test/dsl.hpp"
 #include "caf/test/unit_test_impl.hpp"
 #include "tests/actors/recording_fixture.hpp"
@@ -269,6 +271,89 @@ CAF_TEST(the world that dies ends the run with an error that names it) {
                 [&](caf::error& err) { error = to_string(err); },
                 caf::after(std::chrono::seconds(0)) >> [] { CAF_FAIL("the run stalled"); });
   CAF_CHECK_NOT_EQUAL(error.find("the world stopped unexpectedly"), std::string::npos);
+}
+
+CAF_TEST(a lost worker ends the run with the last whole tick naming the worker) {
+  auto clock = make_clock(5);
+  add_probe(clock, info(1, "crowd", phase::world));
+  auto remote = info(participant_ids::camera(7), "camera/7", phase::cameras);
+  remote.host = "10.0.0.2:4242";
+  auto camera = sys.spawn(silent, "x");  // stuck in tick 0 when its worker goes
+  self->send(clock, join_atom_v, camera, remote);
+  self->send(clock, start_atom_v);
+  sched.run();
+  caf::anon_send_exit(camera, caf::exit_reason::remote_link_unreachable);
+  run();
+  run_result result;
+  self->receive([&](run_result& r) { result = std::move(r); },
+                caf::after(std::chrono::seconds(0)) >> [] { CAF_FAIL("the run stalled"); });
+  CAF_CHECK_EQUAL(result.ticks, 0);
+  CAF_CHECK_NOT_EQUAL(result.failure.find("worker 10.0.0.2:4242 was lost during tick 0"),
+                      std::string::npos);
+  CAF_CHECK(result.lost_workers.empty());
+}
+
+// The fault injector's stand-in under --on-worker-loss crash-nodes: it records the losses it
+// hears of, and the ticks it gets.
+caf::behavior loss_listener(caf::event_based_actor* self, std::shared_ptr<probe_log> log,
+                            std::shared_ptr<std::vector<lost_worker>> heard) {
+  return {
+      [=](tick_atom, std::int64_t tick, std::uint8_t, std::uint32_t) {
+        log->ticks.push_back(std::to_string(tick) + ":0:faults");
+        tick_context ctx(participant_ids::fault_injector, "faults", tick, phase::faults);
+        self->send(caf::actor_cast<caf::actor>(self->current_sender()), std::move(ctx).finish());
+      },
+      [=](lost_worker& lost) { heard->push_back(std::move(lost)); },
+  };
+}
+
+CAF_TEST(under crash nodes a lost worker leaves the barrier and the run goes on) {
+  clock_settings s;
+  s.end_tick = 4;
+  s.on_worker_loss = worker_loss::crash_nodes;
+  auto clock = spawn_clock(sys, s, recorder, caf::actor{});
+  auto heard = std::make_shared<std::vector<lost_worker>>();
+  auto faults = sys.spawn(loss_listener, log, heard);
+  self->send(clock, join_atom_v, faults,
+             info(participant_ids::fault_injector, "faults", phase::faults, wake_mode::on_demand));
+  add_probe(clock, info(1, "crowd", phase::world));
+  add_probe(clock, info(participant_ids::camera(1), "camera/1", phase::cameras));
+  const std::string host = "10.0.0.2:4242";
+  auto on_worker = [&](std::uint64_t id, std::string name, wake_mode m) {
+    auto i = info(id, std::move(name), phase::cameras, m);
+    i.host = host;
+    auto a = sys.spawn(silent, "x");
+    self->send(clock, join_atom_v, a, i);
+    return a;
+  };
+  // Tick 0 waits for camera 7; the worker also hosts a link between two of its cameras.
+  auto camera = on_worker(participant_ids::camera(7), "camera/7", wake_mode::every_tick);
+  auto link = on_worker(participant_ids::link(3), "link/7-8", wake_mode::never);
+  self->send(clock, start_atom_v);
+  sched.run();
+  CAF_CHECK_EQUAL(count("0:3:camera/1"), 1u);
+  CAF_CHECK_EQUAL(count("1:1:crowd"), 0u);
+  // The connection breaks: every proxy of the worker goes, the link first.
+  caf::anon_send_exit(link, caf::exit_reason::remote_link_unreachable);
+  caf::anon_send_exit(camera, caf::exit_reason::remote_link_unreachable);
+  run();
+  run_result result;
+  self->receive([&](run_result& r) { result = std::move(r); },
+                caf::after(std::chrono::seconds(0)) >> [] { CAF_FAIL("the run stalled"); });
+  CAF_CHECK_EQUAL(result.ticks, 4);
+  CAF_CHECK(result.failure.empty());
+  CAF_CHECK(result.unexpected_down.empty());
+  CAF_REQUIRE_EQUAL(result.lost_workers.size(), 1u);
+  CAF_CHECK_EQUAL(result.lost_workers[0], host + " at tick 0");
+  // The injector heard once, with both participants, and had a turn in the next tick.
+  CAF_REQUIRE_EQUAL(heard->size(), 1u);
+  CAF_CHECK_EQUAL(heard->front().host, host);
+  CAF_CHECK_EQUAL(heard->front().tick, 0);
+  const std::vector<std::uint64_t> both{participant_ids::camera(7), participant_ids::link(3)};
+  CAF_CHECK_EQUAL(heard->front().participants, both);
+  CAF_CHECK_EQUAL(count("1:0:faults"), 1u);
+  CAF_CHECK_EQUAL(count("2:0:faults"), 0u);  // on demand: one turn, not every tick
+  CAF_CHECK_EQUAL(count("3:3:camera/1"), 1u);
 }
 
 CAF_TEST(at speed 1 virtual time stays within one tick of wall time) {

@@ -89,20 +89,29 @@ TEST(distributed, one_two_and_three_workers_write_what_one_process_writes) {
   ASSERT_NE(events.find("\"kind\":\"node_recovered\""), std::string::npos);
   ASSERT_NE(events.find("\"kind\":\"joined\""), std::string::npos);
   ASSERT_NE(events.find("\"kind\":\"handoff\""), std::string::npos);
-  const std::vector<std::pair<std::size_t, config::placement_policy>> splits{
-      {1, config::placement_policy::region},
-      {2, config::placement_policy::region},
-      {3, config::placement_policy::region},
-      {3, config::placement_policy::id}};
-  for (const auto& [n, how] : splits) {
+  struct split {
+    std::size_t workers;
+    config::placement_policy how;
+    // Under crash_nodes the links between workers run here and the logs come every tick.
+    worker_loss on_loss;
+  };
+  const std::vector<split> splits{{1, config::placement_policy::region, worker_loss::end_run},
+                                  {2, config::placement_policy::region, worker_loss::end_run},
+                                  {3, config::placement_policy::region, worker_loss::end_run},
+                                  {3, config::placement_policy::id, worker_loss::end_run},
+                                  {3, config::placement_policy::id, worker_loss::crash_nodes}};
+  for (const auto& [n, how, on_loss] : splits) {
     const auto dir = scratch("w" + std::to_string(n));
     run_options options;
     options.workers = std::make_shared<local_workers>(n);
+    options.on_worker_loss = on_loss;
     auto s = replay_faults(dir);
     s.placement.policy = how;
     auto outcome = run_scenario(s, options);
     EXPECT_TRUE(outcome.result.failure.empty()) << outcome.result.failure;
-    EXPECT_EQ(outputs(dir), alone) << n << " workers, placement " << static_cast<int>(how);
+    EXPECT_TRUE(outcome.result.lost_workers.empty());
+    EXPECT_EQ(outputs(dir), alone) << n << " workers, placement " << static_cast<int>(how)
+                                   << ", on loss " << static_cast<int>(on_loss);
     std::filesystem::remove_all(dir);
   }
   std::filesystem::remove_all(alone_dir);

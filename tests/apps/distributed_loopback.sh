@@ -7,6 +7,8 @@
 #   as one process, and with 2 workers the same --video;
 # - a worker killed mid-run: the coordinator ends within 5 s with exit 1, naming the worker and
 #   the last whole tick, and every line of events.jsonl is whole;
+# - the same under --on-worker-loss crash-nodes: exit 0, the run goes on to its end, the lost
+#   worker's cameras are down (`worker_lost`) and the survivors notice;
 # - a worker that never answers, or no worker at all, is reported by name;
 # - a worker asked to listen beyond loopback without TLS refuses.
 set -u
@@ -114,6 +116,50 @@ for f in trajectories.csv pedestrians.csv; do
   [ -z "$(tail -c 1 "$OUT/killed/$f")" ] || fail "$f ends in half a line"
 done
 echo "a worker killed: exit 1 after $took s, outputs whole up to tick $last"
+
+# A worker killed mid-run under --on-worker-loss crash-nodes: its cameras become crashed nodes
+# and the run goes on to its end with the other worker.
+start_worker 4
+survivor_port=${ports[0]}
+victim_port=127.0.0.1:$port
+victim=$pid
+"$ARGUS" run "$SOURCE/scenarios/penn_station_emulated.yaml" --seed 5 --duration "10 min" --no-feeds \
+  --no-progress --set run.output_dir="$OUT/crashed" --workers "$survivor_port,$victim_port" \
+  --on-worker-loss crash-nodes >"$OUT/crashed.txt" 2>&1 &
+coordinator=$!
+pids+=("$coordinator")
+for _ in $(seq 300); do
+  [ -s "$OUT/crashed/events.jsonl.partial" ] || [ -s "$OUT/crashed/events.jsonl" ] && break
+  sleep 0.1
+done
+sleep 1
+kill -9 "$victim"
+wait "$coordinator"
+rc=$?
+[ $rc -eq 0 ] || fail "crash-nodes: exit $rc, expected 0: $(tail -3 "$OUT/crashed.txt")"
+grep -q "worker $victim_port was lost during tick [0-9]*.*crash-nodes" "$OUT/crashed.txt" ||
+  fail "crash-nodes: no message naming the lost worker: $(tail -3 "$OUT/crashed.txt")"
+python3 - "$OUT/crashed" "$victim_port" <<'PY' || fail "crash-nodes: the run did not go on as it should"
+import json, sys
+out, victim = sys.argv[1], sys.argv[2]
+events = [json.loads(line) for line in open(f"{out}/events.jsonl")]
+summary = json.load(open(f"{out}/summary.json"))
+json.load(open(f"{out}/metrics.json"))
+assert summary["ticks"] == 9000, summary["ticks"]
+lost = summary["lost_workers"]
+assert len(lost) == 1 and lost[0].startswith(victim + " at tick "), lost
+at = int(lost[0].rsplit(" ", 1)[1])
+downs = [e for e in events if e["kind"] == "fault" and e["fault"] == "worker_lost"]
+cameras = {e["camera"] for e in downs}
+assert cameras and all(e["tick"] in (at, at + 1) for e in downs), downs
+# The run went on after the loss, and the survivors noticed it through silence alone.
+assert max(e["tick"] for e in events) > at + 15 * 60, "nothing happened after the loss"
+noticed = [e for e in events if e["kind"] == "neighbour_lost" and e["tick"] > at
+           and e["neighbour"] in cameras and e["camera"] not in cameras]
+assert noticed, "no surviving camera noticed a lost one"
+print(f"lost at tick {at}: cameras {sorted(cameras)} down, noticed by", sorted({e['camera'] for e in noticed}))
+PY
+echo "a worker killed under crash-nodes: exit 0, the run went on to its end"
 
 # A worker that accepts the connection and never answers, and a port with no worker.
 python3 -c '
