@@ -42,8 +42,11 @@ stage_end() {  # stage_end NAME: records its time and whether its compiles came 
   read -r hits misses < <(ccache_compiles)
   hits=$((hits - stage_hits))
   misses=$((misses - stage_misses))
-  # Warm: at most 5 % of the stage's compiles (and at most 20) had to run the compiler.
-  if [ $((misses * 20)) -le $((hits + misses)) ] && [ "$misses" -le 20 ]; then
+  # Warm: at most 5 % of the stage's compiles (and at most 20) had to run the compiler. With the
+  # cache off (CCACHE_DISABLE) or absent, its counts stay still while everything compiles: cold.
+  if [ -n "${CCACHE_DISABLE:-}" ] || ! command -v ccache >/dev/null; then
+    stage_warm[$name]=0
+  elif [ $((misses * 20)) -le $((hits + misses)) ] && [ "$misses" -le 20 ]; then
     stage_warm[$name]=1
   else
     stage_warm[$name]=0
