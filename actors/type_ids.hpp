@@ -86,5 +86,6 @@ CAF_ADD_ATOM(argus, argus::actors, gather_atom, "w_gather")
 CAF_ADD_ATOM(argus, argus::actors, board_atom, "w_board")
 CAF_ADD_ATOM(argus, argus::actors, take_log_atom, "w_take")
 CAF_ADD_ATOM(argus, argus::actors, release_atom, "w_release")
+CAF_ADD_ATOM(argus, argus::actors, listening_atom, "w_listen")
 
 CAF_END_TYPE_ID_BLOCK(argus)

@@ -112,7 +112,12 @@ struct worker_host_state {
 
 using host_actor = caf::stateful_actor<worker_host_state>;
 
-caf::error refuse(std::string why) {
+// Says no to the coordinator that asked, and says so here too: the worker's operator sees
+// who was refused and why, not only the coordinator.
+caf::error refuse(caf::local_actor* self, std::string why) {
+  const auto& sender = self->current_sender();
+  spdlog::warn("refused {}: {}",
+               sender ? "the coordinator on node " + to_string(sender->node()) : "a request", why);
   return caf::make_error(caf::sec::runtime_error, std::move(why));
 }
 
@@ -125,7 +130,7 @@ void end_run(host_actor* self) {
 
 caf::result<std::vector<caf::actor>> set_up(host_actor* self, worker_setup& setup) {
   auto& st = self->state;
-  if (st.run) return refuse(fmt::format("worker {} is busy with another run", st.name));
+  if (st.run) return refuse(self, fmt::format("worker {} is busy with another run", st.name));
   try {
     hosted_run run;
     run.files = std::make_unique<setup_files>();
@@ -162,21 +167,23 @@ caf::result<std::vector<caf::actor>> set_up(host_actor* self, worker_setup& setu
                  links.size());
     return links;
   } catch (const std::exception& e) {
-    return refuse(fmt::format("worker {} cannot host the run: {}", st.name, e.what()));
+    return refuse(self, fmt::format("worker {} cannot host the run: {}", st.name, e.what()));
   }
 }
 
 caf::result<std::vector<caf::actor>> spawn_cameras(host_actor* self,
                                                    std::vector<camera_placement>& cameras) {
   auto& st = self->state;
-  if (!st.run) return refuse(fmt::format("worker {} has no run to spawn cameras in", st.name));
+  if (!st.run)
+    return refuse(self, fmt::format("worker {} has no run to spawn cameras in", st.name));
   std::vector<caf::actor> out;
   for (auto& c : cameras) {
     const auto& all = st.run->scenario.cameras;
     auto it =
         std::find_if(all.begin(), all.end(), [&](const auto& cam) { return cam.id == c.camera; });
     if (it == all.end())
-      return refuse(fmt::format("worker {}: the scenario has no camera {}", st.name, c.camera));
+      return refuse(self,
+                    fmt::format("worker {}: the scenario has no camera {}", st.name, c.camera));
     link_directory links;
     for (auto& l : c.links) links[l.neighbour] = attached_link{l.participant, std::move(l.handle)};
     auto node =
@@ -256,10 +263,11 @@ caf::behavior worker_host(host_actor* self, std::string name, std::size_t render
       [self](worker_hello_atom,
              const std::string& version) -> caf::result<std::string, std::string> {
         if (version != argus_version())
-          return refuse(fmt::format("worker {} runs Argus {} and the coordinator Argus {}",
-                                    self->state.name, argus_version(), version));
+          return refuse(self, fmt::format("worker {} runs Argus {} and the coordinator Argus {}",
+                                          self->state.name, argus_version(), version));
         return {std::string(argus_version()), self->state.name};
       },
+      [self](listening_atom, std::string& name) { self->state.name = std::move(name); },
       [self](worker_setup_atom, worker_setup& setup) { return set_up(self, setup); },
       [self](spawn_cameras_atom, std::vector<camera_placement>& cameras) {
         return spawn_cameras(self, cameras);
@@ -284,8 +292,7 @@ caf::behavior worker_host(host_actor* self, std::string name, std::size_t render
           st.run->last =
               apply_delta(*st.run->world->station, st.run->last.get(), deserialize(delta));
         } catch (const std::invalid_argument& e) {
-          spdlog::error("worker {}: {}", st.name, e.what());
-          return refuse(fmt::format("worker {}: {}", st.name, e.what()));
+          return refuse(self, fmt::format("worker {}: {}", st.name, e.what()));
         }
         st.run->world->board->publish(st.run->last);
         return done_atom_v;

@@ -15,6 +15,9 @@ const char* argus_version();
 /// `argus worker` publishes it, tests spawn it in-process. `name` is how it introduces itself;
 /// `render_threads` the renderers it makes for pixel sensing.
 ///
+/// `(listening_atom, std::string name)` renames it: `argus worker --listen HOST:0` learns its
+/// port only once it has published the host.
+///
 /// One run at a time. In the order a coordinator sends them:
 /// - `(worker_hello_atom, std::string version)` -> `(std::string version, std::string name)`, or
 ///   an error naming both versions when they differ;

@@ -40,6 +40,9 @@ void serve_worker(const worker_options& options, const std::function<void(unsign
     throw std::runtime_error(fmt::format("cannot listen on {}: {}", options.listen.to_string(),
                                          system.render(port.error())));
   }
+  // Published on port 0, it learns its name only now.
+  caf::anon_send(host, actors::listening_atom_v,
+                 endpoint{options.listen.host, static_cast<std::uint16_t>(*port)}.to_string());
   listening(*port);
   while (!stop()) std::this_thread::sleep_for(std::chrono::milliseconds(100));
   // What a run left here ends first: the actor system waits for every actor before it goes.

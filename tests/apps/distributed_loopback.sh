@@ -10,11 +10,14 @@
 # - the same under --on-worker-loss crash-nodes: exit 0, the run goes on to its end, the lost
 #   worker's cameras are down (`worker_lost`) and the survivors notice;
 # - a worker that never answers, or no worker at all, is reported by name;
+# - a coordinator of another Argus version, in a process of its own, is refused naming the worker
+#   and both versions, and the worker says whom it refused and why;
 # - a worker asked to listen beyond loopback without TLS refuses.
 set -u
 ARGUS=$1
 SOURCE=$2
 OUT=$3
+OTHER_VERSION=${4:-}  # tests/apps/other_version_coordinator, for the version refusal
 rm -rf "$OUT"
 mkdir -p "$OUT"
 pids=()
@@ -180,3 +183,14 @@ echo "a mute worker: $(grep -o "worker $mute.*" "$OUT/mute.txt" | head -1)"
 "$ARGUS" worker --listen 0.0.0.0:0 >"$OUT/open.txt" 2>&1 && fail "a worker listened beyond loopback without TLS"
 grep -q "TLS" "$OUT/open.txt" || fail "no reason given: $(cat "$OUT/open.txt")"
 echo "beyond loopback without TLS: refused"
+
+if [ -n "$OTHER_VERSION" ]; then
+  "$OTHER_VERSION" "$survivor_port" 0.0.0-other >"$OUT/other.txt" 2>&1 ||
+    fail "a coordinator of another version: exit $?: $(cat "$OUT/other.txt")"
+  version=$("$ARGUS" --version | grep -o '[0-9][0-9.]*[^ ]*' | head -1)
+  grep -q "worker $survivor_port runs Argus $version and the coordinator Argus 0.0.0-other" "$OUT/other.txt" ||
+    fail "the refusal does not name the worker and both versions: $(cat "$OUT/other.txt")"
+  grep -q "refused the coordinator on node .*runs Argus $version and the coordinator Argus 0.0.0-other" \
+    "$OUT/worker-1.log" || fail "the worker did not say whom it refused: $(tail -3 "$OUT/worker-1.log")"
+  echo "another version, across processes: $(cat "$OUT/other.txt")"
+fi
