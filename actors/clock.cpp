@@ -30,6 +30,9 @@ struct end_round {
   std::vector<caf::actor> targets;
   std::size_t next = 0;
   std::size_t pending = 0;
+  // Asked and not answered: one whose worker is lost meanwhile never answers (a request
+  // already on the wire gets no error back), so its end settles it instead.
+  std::set<caf::actor_addr> outstanding;
 
   // Starts the round with `who`; false when there is nobody to ask.
   bool begin(std::vector<caf::actor> who) {
@@ -42,8 +45,12 @@ struct end_round {
   const caf::actor* next_to_ask() {
     auto answered = targets.size() - pending;
     if (next == targets.size() || next - answered >= in_flight) return nullptr;
+    outstanding.insert(targets[next].address());
     return &targets[next++];
   }
+
+  // Whether `who` was asked and had not answered (its answer, or its end, counts once).
+  bool settle(const caf::actor_addr& who) { return outstanding.erase(who) != 0; }
 };
 
 // setup --start--> ticking --end_tick reached--> finishing --recorder done--> (quit)
@@ -265,6 +272,13 @@ class clock_actor : public caf::event_based_actor {
       shut_down();
       return;
     }
+    if (finished_) {
+      // The end of the run asks for flushes and reports: one that can no longer come (its
+      // worker is gone) is not waited for.
+      if (msg.reason == caf::exit_reason::remote_link_unreachable) lost_at_end(msg.source);
+      if (flushes_.settle(msg.source)) flush_received();
+      if (reports_.settle(msg.source)) report_received();
+    }
     auto it = by_address_.find(msg.source);
     if (it == by_address_.end()) return;
     auto id = it->second;
@@ -333,6 +347,32 @@ class clock_actor : public caf::event_based_actor {
     finished_ = true;  // no phase runs on when the lost participants leave the barrier
     for (auto id : gone) drop(id, /*expected=*/true);
     finish();
+  }
+
+  // A worker lost while the run ends: what its participants still held (a camera's last
+  // mail, a link's accounting) is missing from the outputs. Without crash-nodes that fails the
+  // run, as a loss does before; with it, the worker is listed as lost.
+  void lost_at_end(const caf::actor_addr& source) {
+    auto it = by_address_.find(source);
+    if (it == by_address_.end()) return;
+    auto e = participants_.find(it->second);
+    if (e == participants_.end() || e->second.info.host.empty()) return;
+    const auto& host = e->second.info.host;
+    const auto what = fmt::format("{} at the end of the run (tick {})", host, tick_);
+    if (std::find(lost_at_end_.begin(), lost_at_end_.end(), host) != lost_at_end_.end()) return;
+    lost_at_end_.push_back(host);
+    spdlog::error(
+        "clock: worker {} was lost while the run ended; what its participants still "
+        "held (their last mail, their links' accounting) is missing",
+        host);
+    if (settings_.on_worker_loss == worker_loss::crash_nodes) {
+      result_.lost_workers.push_back(what);
+    } else if (result_.failure.empty()) {
+      result_.failure = fmt::format(
+          "worker {} was lost while the run ended; the outputs are complete up to tick {} but for "
+          "what its participants still held",
+          host, tick_ - 1);
+    }
   }
 
   // `--on-worker-loss crash-nodes`: what the worker hosted leaves the barrier at once, as a
@@ -508,7 +548,13 @@ class clock_actor : public caf::event_based_actor {
   void ask_for_flushes() {
     while (auto* target = flushes_.next_to_ask())
       request(*target, caf::infinite, flush_atom_v)
-          .then([this](done_atom) { flush_received(); }, [this](caf::error&) { flush_received(); });
+          .then(
+              [this, who = target->address()](done_atom) {
+                if (flushes_.settle(who)) flush_received();
+              },
+              [this, who = target->address()](caf::error&) {
+                if (flushes_.settle(who)) flush_received();
+              });
   }
 
   void flush_received() {
@@ -530,11 +576,14 @@ class clock_actor : public caf::event_based_actor {
     while (auto* target = reports_.next_to_ask())
       request(*target, caf::infinite, report_atom_v, tick_)
           .then(
-              [this](link_report& r) {
+              [this, who = target->address()](link_report& r) {
+                if (!reports_.settle(who)) return;
                 result_.links[r.link] = std::move(r.counts);
                 report_received();
               },
-              [this](caf::error&) { report_received(); });
+              [this, who = target->address()](caf::error&) {
+                if (reports_.settle(who)) report_received();
+              });
   }
 
   void report_received() {
@@ -588,6 +637,7 @@ class clock_actor : public caf::event_based_actor {
   end_round flushes_;
   end_round reports_;
   std::vector<std::string> unexpected_down_;
+  std::vector<std::string> lost_at_end_;                            // hosts
   std::array<std::vector<std::uint64_t>, phase_count> every_tick_;  // sorted ids
   std::array<std::map<std::int64_t, std::vector<std::uint64_t>>, phase_count> calendar_;
 

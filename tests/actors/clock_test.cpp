@@ -356,6 +356,54 @@ CAF_TEST(under crash nodes a lost worker leaves the barrier and the run goes on)
   CAF_CHECK_EQUAL(count("3:3:camera/1"), 1u);
 }
 
+// A camera on a worker that acknowledges its ticks and never answers the end-of-run flush (as
+// one whose worker is lost after the request went out).
+caf::behavior flushes_never(caf::event_based_actor* self, participant_info info) {
+  return {
+      [=](tick_atom, std::int64_t tick, std::uint8_t, std::uint32_t) {
+        tick_context ctx(info.id, info.name, tick, info.tick_phase);
+        self->send(caf::actor_cast<caf::actor>(self->current_sender()), std::move(ctx).finish());
+      },
+      [](flush_atom) -> caf::result<done_atom> { return caf::delegated<done_atom>(); },
+  };
+}
+
+CAF_TEST(a worker lost while the run ends does not hold the end) {
+  for (auto on_loss : {worker_loss::end_run, worker_loss::crash_nodes}) {
+    clock_settings s;
+    s.end_tick = 2;
+    s.on_worker_loss = on_loss;
+    // A recorder of its own: the stand-in ends with the run it recorded.
+    auto clock =
+        spawn_clock(sys, s, sys.spawn(fake_recorder, std::make_shared<recorded>()), caf::actor{});
+    auto i = info(participant_ids::camera(7), "camera/7", phase::cameras);
+    i.host = "10.0.0.2:4242";
+    i.flushes_at_end = true;
+    auto camera = sys.spawn(flushes_never, i);
+    self->send(clock, join_atom_v, camera, i);
+    self->send(clock, start_atom_v);
+    run();
+    bool ended = false;
+    self->receive([&](run_result&) { ended = true; }, caf::after(std::chrono::seconds(0)) >> [] {});
+    CAF_CHECK(!ended);  // waiting for the flush
+    caf::anon_send_exit(camera, caf::exit_reason::remote_link_unreachable);
+    run();
+    run_result result;
+    self->receive([&](run_result& r) { result = std::move(r), ended = true; },
+                  caf::after(std::chrono::seconds(0)) >> [] {});
+    CAF_REQUIRE(ended);
+    CAF_CHECK_EQUAL(result.ticks, 2);
+    if (on_loss == worker_loss::end_run) {
+      CAF_CHECK_NOT_EQUAL(result.failure.find("worker 10.0.0.2:4242 was lost while the run ended"),
+                          std::string::npos);
+    } else {
+      CAF_CHECK(result.failure.empty());
+      CAF_REQUIRE_EQUAL(result.lost_workers.size(), 1u);
+      CAF_CHECK_EQUAL(result.lost_workers[0], "10.0.0.2:4242 at the end of the run (tick 2)");
+    }
+  }
+}
+
 CAF_TEST(at speed 1 virtual time stays within one tick of wall time) {
   auto clock = make_clock(60, 1.0);
   add_probe(clock, info(1, "crowd", phase::world));
