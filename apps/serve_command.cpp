@@ -10,6 +10,7 @@
 #include "apps/run_record.hpp"
 #include "apps/set_option.hpp"
 #include "apps/task_option.hpp"
+#include "apps/tls_options.hpp"
 #include "config/scenario_error.hpp"
 #include "config/whole_file.hpp"
 #include "distributed/loopback.hpp"
@@ -30,6 +31,7 @@ struct serve_arguments {
   std::string bind = "127.0.0.1";
   int port = 8080;
   bool hold = false;
+  tls_arguments tls;
 };
 
 // Blocks until SIGINT or SIGTERM (argus serve --hold, once the run is over).
@@ -44,6 +46,10 @@ void wait_for_interrupt() {
 }
 
 int serve(const serve_arguments& args) {
+  if (args.tls.given() && (args.tls.cert.empty() || args.tls.key.empty() || args.tls.ca.empty())) {
+    std::cerr << "argus serve: HTTPS needs all of --tls-cert, --tls-key and --tls-ca\n";
+    return bad_input;
+  }
   config::scenario scenario;
   try {
     scenario = load_with_tasks(args.scenario, overrides_from(args.set), args.tasks);
@@ -61,11 +67,17 @@ int serve(const serve_arguments& args) {
     serve::server_settings settings;
     settings.bind = args.bind;
     settings.port = args.port;
+    settings.tls_cert = args.tls.cert;
+    settings.tls_key = args.tls.key;
+    settings.tls_ca = args.tls.ca;
     // Beyond loopback anyone who reaches the console could crash cameras: it then needs a
-    // secret, printed here once and nowhere else (docs/serve.md, "Beyond loopback").
-    if (!distributed::is_loopback_host(args.bind)) settings.token = serve::make_console_token();
+    // client certificate from the CA of --tls-ca (HTTPS), or a secret, printed here once and
+    // nowhere else (docs/serve.md, "Beyond loopback").
+    if (!distributed::is_loopback_host(args.bind) && !args.tls.given())
+      settings.token = serve::make_console_token();
     server.start(settings);
-    std::cout << fmt::format("argus serve: http://{}:{}/{}", args.bind, server.port(),
+    std::cout << fmt::format("argus serve: {}://{}:{}/{}", args.tls.given() ? "https" : "http",
+                             args.bind, server.port(),
                              settings.token.empty() ? "" : "?token=" + settings.token)
               << std::endl;
     actors::run_options options;
@@ -114,7 +126,8 @@ void add_serve_command(CLI::App& app, int& result) {
       ->check(integer_in(0, 65535));
   cmd->add_option("--bind", args->bind,
                   "Address to listen on (default 127.0.0.1: this machine only; beyond loopback "
-                  "the console requires the secret it prints)");
+                  "the console requires a client certificate (--tls-*) or the secret it prints)");
+  add_tls_options(cmd, args->tls, "console", "browser");
   cmd->add_flag("--hold", args->hold,
                 "Keep serving after the run has ended, until interrupted (Ctrl-C)");
   cmd->callback([args, &result] { result = serve(*args); });

@@ -262,6 +262,17 @@ void console_server::routes() {
 
 void console_server::start(const server_settings& settings) {
   settings_ = settings;
+  if (!settings_.tls_cert.empty() || !settings_.tls_key.empty() || !settings_.tls_ca.empty()) {
+    // The client CA makes httplib require and verify a client certificate in every handshake.
+    auto https = std::make_unique<httplib::SSLServer>(
+        settings_.tls_cert.c_str(), settings_.tls_key.c_str(), settings_.tls_ca.c_str());
+    if (!https->is_valid())
+      throw std::runtime_error(fmt::format(
+          "cannot serve HTTPS with --tls-cert {}, --tls-key {} and --tls-ca {}: expected "
+          "readable PEM files, the key the certificate's",
+          settings_.tls_cert, settings_.tls_key, settings_.tls_ca));
+    server_ = std::move(https);
+  }
   // The streams hold a thread each; the rest (feeds, commands) must still get one.
   const auto threads = static_cast<std::size_t>(settings_.max_streams) + 8;
   server_->new_task_queue = [threads] { return new httplib::ThreadPool(threads); };

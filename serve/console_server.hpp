@@ -35,6 +35,12 @@ struct server_settings {
   /// same-site, HTTP-only cookie for the page's own requests), the cookie `argus_token`, or
   /// `Authorization: Bearer`. Anything else gets HTTP 401.
   std::string token;
+  /// HTTPS with mutual authentication (docs/serve.md, "Beyond loopback"): this console's
+  /// certificate and its key, and the CA that must have signed every client's certificate (a
+  /// client without one is refused in the handshake). All three (PEM files), or none for HTTP.
+  std::string tls_cert;
+  std::string tls_key;
+  std::string tls_ca;
 };
 
 /// A fresh console secret: 128 bits from the system's entropy, as 32 hex digits.
@@ -58,7 +64,7 @@ class console_server {
   console_server& operator=(const console_server&) = delete;
 
   /// Binds and starts serving on a thread of its own. Throws std::runtime_error naming the
-  /// address when it cannot bind.
+  /// address when it cannot bind, or the files when HTTPS cannot use them.
   void start(const server_settings& settings);
 
   /// The port it listens on (after start).

@@ -10,13 +10,14 @@ import urllib.request
 class Serve:
     """One `argus serve` process on a free port of 127.0.0.1."""
 
-    def __init__(self, argus, scenario, out, *extra):
+    def __init__(self, argus, scenario, out, *extra, context=None):
         self.out = out
+        self.context = context  # an ssl.SSLContext for a console that serves HTTPS
         self.process = subprocess.Popen(
             [argus, "serve", scenario, "--port", "0", "--out", out, *extra],
             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
         line = self.process.stdout.readline()
-        if not line.startswith("argus serve: http://"):
+        if not line.startswith(("argus serve: http://", "argus serve: https://")):
             self.process.kill()
             raise RuntimeError("argus serve did not start: %r %s" %
                                (line, self.process.stderr.read()))
@@ -33,7 +34,7 @@ class Serve:
             headers["Authorization"] = "Bearer " + self.token
         req = urllib.request.Request(self.url + path, data=data, method=method, headers=headers)
         try:
-            with urllib.request.urlopen(req, timeout=timeout) as res:
+            with urllib.request.urlopen(req, timeout=timeout, context=self.context) as res:
                 status, payload, kind = res.status, res.read(), res.headers["Content-Type"]
         except urllib.error.HTTPError as e:
             status, payload, kind = e.code, e.read(), e.headers["Content-Type"]
