@@ -248,6 +248,14 @@ caf::behavior worker_host(host_actor* self, std::string name, std::size_t render
   self->state.name = std::move(name);
   self->state.render_threads = render_threads;
   self->set_down_handler([self](caf::down_msg& msg) { on_down(self, msg); });
+  // A host that is ended takes what it hosts with it, for the same reason: a coordinator sees
+  // the cameras and links of a host that goes as it sees those of a worker that goes.
+  self->set_exit_handler([self](caf::exit_msg& msg) {
+    if (auto& run = self->state.run)
+      for (auto& a : run->spawned) self->send_exit(a, msg.reason);
+    self->state.run.reset();
+    self->quit(msg.reason);
+  });
   return {
       [self](tick_atom, std::int64_t tick, std::uint8_t phase, std::vector<batched_tick>& due) {
         if (self->state.run) tick_batch_of(self, tick, phase, due);

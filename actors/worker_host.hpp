@@ -15,6 +15,10 @@ const char* argus_version();
 /// `argus worker` publishes it, tests spawn it in-process. `name` is how it introduces itself;
 /// `render_threads` the renderers it makes for pixel sensing.
 ///
+/// Ended (an exit message), it ends the cameras and links it hosts with the same reason, so a
+/// host ended with `remote_link_unreachable` in one process looks to the coordinator like a
+/// worker lost over the network (tests/actors/distributed_test.cpp).
+///
 /// `(listening_atom, std::string name)` renames it: `argus worker --listen HOST:0` learns its
 /// port only once it has published the host.
 ///

@@ -43,6 +43,46 @@ class local_workers final : public worker_pool {
   std::size_t count_;
 };
 
+// Waits (polling every 5 ms) until `dir` holds a run's first events, then ends `victim` as a
+// broken connection ends a remote worker: every proxy of it goes with
+// `remote_link_unreachable`. It gives up once the run is over (events.jsonl has its name) or
+// after 60 s. It lives in the run's own actor system, so no handle outlives it.
+caf::behavior saboteur(caf::event_based_actor* self, caf::actor victim, std::filesystem::path dir,
+                       int polls_left) {
+  self->send(self, tick_atom_v, std::int64_t{0}, std::uint8_t{0}, std::uint32_t{0});
+  return {
+      [=](tick_atom, std::int64_t, std::uint8_t, std::uint32_t) mutable {
+        std::error_code ec;
+        const auto size = std::filesystem::file_size(dir / "events.jsonl.partial", ec);
+        if (!ec && size > 0) {
+          self->send_exit(victim, caf::exit_reason::remote_link_unreachable);
+          self->quit();
+        } else if (--polls_left <= 0 || std::filesystem::exists(dir / "events.jsonl")) {
+          self->quit();
+        } else {
+          self->delayed_send(self, std::chrono::milliseconds(5), tick_atom_v, std::int64_t{0},
+                             std::uint8_t{0}, std::uint32_t{0});
+        }
+      },
+  };
+}
+
+// Two local workers, the second ended by a saboteur once the run in `dir` has written events.
+class losing_workers final : public worker_pool {
+ public:
+  explicit losing_workers(std::filesystem::path dir) : dir_(std::move(dir)) {}
+  void configure(caf::actor_system_config&) const override {}
+  std::vector<worker_contact> connect(caf::actor_system& system) const override {
+    std::vector<worker_contact> out{{"local-1", spawn_worker_host(system, "local-1", 1)},
+                                    {"local-2", spawn_worker_host(system, "local-2", 1)}};
+    system.spawn(saboteur, out[1].host, dir_, 60 * 200);
+    return out;
+  }
+
+ private:
+  std::filesystem::path dir_;
+};
+
 // replay_faults.yaml's first 36 s (two tasks, crashes and three recoveries, cuts, loss bursts),
 // with the shipped emulated sensor: pixels cross processes in tests/apps/distributed_loopback.sh,
 // and here the sanitizers must finish too.
@@ -170,6 +210,50 @@ TEST(distributed, two_workers_record_the_video_one_process_records) {
       << "the video of 2 workers differs from one process's";
   EXPECT_EQ(outputs(dir), outputs(alone_dir));
   std::filesystem::remove_all(alone_dir);
+  std::filesystem::remove_all(dir);
+}
+
+// penn_station_emulated.yaml, 2 minutes, with two local workers of which the second is lost in
+// mid-run, wherever the threads put the loss.
+run_outcome run_losing_a_worker(const std::filesystem::path& dir, worker_loss on_loss) {
+  auto s = config::load_scenario(std::filesystem::path(ARGUS_SOURCE_DIR) / "scenarios" /
+                                 "penn_station_emulated.yaml");
+  s.run.seed = 5;
+  s.run.duration = config::seconds{120.0};
+  s.run.threads = 2;
+  s.run.output_dir = dir.string();
+  run_options options;
+  options.workers = std::make_shared<losing_workers>(dir);
+  options.on_worker_loss = on_loss;
+  return run_scenario(s, options);
+}
+
+TEST(distributed, a_lost_worker_ends_the_run_or_its_cameras_crash) {
+  const auto ended_dir = scratch("lost-end");
+  auto ended = run_losing_a_worker(ended_dir, worker_loss::end_run);
+  EXPECT_NE(ended.result.failure.find("worker local-2 was lost during tick"), std::string::npos)
+      << ended.result.failure;
+  EXPECT_LT(ended.result.ticks, 1800);
+  std::filesystem::remove_all(ended_dir);
+
+  const auto dir = scratch("lost-crash");
+  auto outcome = run_losing_a_worker(dir, worker_loss::crash_nodes);
+  EXPECT_TRUE(outcome.result.failure.empty()) << outcome.result.failure;
+  EXPECT_EQ(outcome.result.ticks, 1800);
+  ASSERT_EQ(outcome.result.lost_workers.size(), 1u);
+  EXPECT_EQ(outcome.result.lost_workers[0].rfind("local-2 at tick ", 0), 0u)
+      << outcome.result.lost_workers[0];
+  // Every camera of the second worker is down, and none of the first's.
+  const auto where =
+      place_cameras(config::load_scenario(std::filesystem::path(ARGUS_SOURCE_DIR) / "scenarios" /
+                                          "penn_station_emulated.yaml"),
+                    2);
+  const auto events = file_text(dir / "events.jsonl");
+  for (const auto& [camera, worker] : where) {
+    const auto line = "\"fault\":\"worker_lost\",\"camera\":" + std::to_string(camera) + ",";
+    EXPECT_EQ(events.find(line) != std::string::npos, worker == 1) << "camera " << camera;
+  }
+  EXPECT_TRUE(std::filesystem::exists(dir / "metrics.json"));
   std::filesystem::remove_all(dir);
 }
 
