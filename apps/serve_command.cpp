@@ -14,6 +14,9 @@
 #include "config/scenario_error.hpp"
 #include "config/whole_file.hpp"
 #include "distributed/loopback.hpp"
+#ifdef ARGUS_WITH_DISTRIBUTED
+#include "distributed/tls_files.hpp"
+#endif
 #include "fmt/format.h"
 #include "live/command_log.hpp"
 #include "live/session.hpp"
@@ -46,9 +49,23 @@ void wait_for_interrupt() {
 }
 
 int serve(const serve_arguments& args) {
-  if (args.tls.given() && (args.tls.cert.empty() || args.tls.key.empty() || args.tls.ca.empty())) {
-    std::cerr << "argus serve: HTTPS needs all of --tls-cert, --tls-key and --tls-ca\n";
-    return bad_input;
+  if (args.tls.given()) {
+#ifdef ARGUS_WITH_DISTRIBUTED
+    // The same check as argus worker's: all three, readable PEM, the key the certificate's.
+    try {
+      if (auto warning = distributed::check_tls_files({args.tls.cert, args.tls.key, args.tls.ca});
+          !warning.empty())
+        std::cerr << "argus serve: " << warning << '\n';
+    } catch (const std::invalid_argument& e) {
+      std::cerr << "argus serve: " << e.what() << '\n';
+      return bad_input;
+    }
+#else
+    if (args.tls.cert.empty() || args.tls.key.empty() || args.tls.ca.empty()) {
+      std::cerr << "argus serve: HTTPS needs all of --tls-cert, --tls-key and --tls-ca\n";
+      return bad_input;
+    }
+#endif
   }
   config::scenario scenario;
   try {
