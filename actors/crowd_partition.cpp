@@ -16,11 +16,55 @@ struct crowd_partition_state {
   /// The snapshot the next step reads.
   std::shared_ptr<const world::snapshot> previous;
   ordered_inbox<world_update> updates;
+  /// On a worker: who was handed over to it, and its newcomers.
+  ordered_inbox<partition_arrivals> arrivals;
   std::uint64_t sent = 0;
 };
 
-caf::behavior crowd_partition(caf::stateful_actor<crowd_partition_state>* self,
-                              crowd_partition_setup setup) {
+using partition_actor = caf::stateful_actor<crowd_partition_state>;
+
+// The snapshot this tick's step reads, with the pedestrians it steps: on a worker its own
+// kept ones, then the arrivals, in the order the coordinator would have sent them all.
+std::shared_ptr<const world::snapshot> take_due(partition_actor* self, std::int64_t tick,
+                                                std::uint8_t p) {
+  auto& st = self->state;
+  for (auto& [stamp, update] : st.updates.take_due(tick, p)) {
+    st.previous = std::move(update.snapshot);
+    st.setup.pedestrians = std::move(update.pedestrians);
+  }
+  if (!st.setup.board) return st.previous;
+  auto& own = st.setup.pedestrians;
+  for (auto& [stamp, arrived] : st.arrivals.take_due(tick, p))
+    own.insert(own.end(), std::make_move_iterator(arrived.pedestrians.begin()),
+               std::make_move_iterator(arrived.pedestrians.end()));
+  return st.setup.board->latest();
+}
+
+// Steps and reports. Here the pedestrians travel with the report and come back updated; on a
+// worker only their public states go, and those who stayed are kept.
+void step_and_report(partition_actor* self, tick_context& ctx, const world::snapshot& previous,
+                     const mail_stamp& stamp) {
+  auto& st = self->state;
+  auto result = world::partition_step(*st.setup.station, previous, st.setup.pedestrians,
+                                      st.setup.bounds, st.setup.behaviour);
+  if (st.setup.board) {
+    partition_states report;
+    report.index = st.setup.index;
+    report.kept.reserve(result.pedestrians.size());
+    for (const auto& each : result.pedestrians) report.kept.push_back(each.state);
+    report.handed_over = std::move(result.handed_over);
+    report.events = std::move(result.events);
+    st.setup.pedestrians = std::move(result.pedestrians);
+    self->send(st.coordinator, world_report_atom_v, stamp, std::move(report));
+  } else {
+    st.setup.pedestrians.clear();
+    self->send(st.coordinator, world_report_atom_v, stamp,
+               partition_report{st.setup.index, std::move(result)});
+  }
+  ctx.sent_mail_to(participant_ids::world_coordinator);
+}
+
+caf::behavior crowd_partition(partition_actor* self, crowd_partition_setup setup) {
   auto& st = self->state;
   st.info = crowd_partition_participant(setup.index);
   st.previous = std::move(setup.initial);
@@ -32,30 +76,22 @@ caf::behavior crowd_partition(caf::stateful_actor<crowd_partition_state>* self,
       [self](world_update_atom, const mail_stamp& stamp, world_update& update) {
         self->state.updates.put(stamp, std::move(update));
       },
+      [self](world_update_atom, const mail_stamp& stamp, partition_arrivals& arrived) {
+        self->state.arrivals.put(stamp, std::move(arrived));
+      },
       [self](tick_atom, std::int64_t tick, std::uint8_t p, std::uint32_t) {
         auto& st = self->state;
         tick_context ctx(st.info.id, st.info.name, tick, st.info.tick_phase);
-        for (auto& [stamp, update] : st.updates.take_due(tick, p)) {
-          st.previous = std::move(update.snapshot);
-          st.setup.pedestrians = std::move(update.pedestrians);
-        }
-        // The coordinator answers every report before this partition's next tick, so the
-        // snapshot is always the one of this tick unless the coordinator is gone.
-        if (!st.previous || st.previous->tick() != static_cast<std::uint64_t>(tick) ||
-            !st.coordinator) {
+        const auto previous = take_due(self, tick, p);
+        // The coordinator answers every report before this partition's next tick, and a
+        // worker's board holds the tick's snapshot before its turn, so the snapshot is always
+        // the one of this tick unless the coordinator is gone.
+        if (!previous || previous->tick() != static_cast<std::uint64_t>(tick) || !st.coordinator) {
           ctx.emit(events::world_out_of_step{
               .partition = st.setup.index,
-              .snapshot_tick = st.previous ? static_cast<std::int64_t>(st.previous->tick()) : -1});
+              .snapshot_tick = previous ? static_cast<std::int64_t>(previous->tick()) : -1});
         } else {
-          partition_report report;
-          report.index = st.setup.index;
-          report.result =
-              world::partition_step(*st.setup.station, *st.previous, st.setup.pedestrians,
-                                    st.setup.bounds, st.setup.behaviour);
-          st.setup.pedestrians.clear();  // they travel with the report and come back updated
-          self->send(st.coordinator, world_report_atom_v,
-                     mail_stamp{tick, p, st.info.id, st.sent++}, std::move(report));
-          ctx.sent_mail_to(participant_ids::world_coordinator);
+          step_and_report(self, ctx, *previous, mail_stamp{tick, p, st.info.id, st.sent++});
         }
         self->send(caf::actor_cast<caf::actor>(self->current_sender()), std::move(ctx).finish());
       },

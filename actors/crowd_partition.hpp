@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "actors/participant_info.hpp"
+#include "actors/snapshot_board.hpp"
 #include "caf/fwd.hpp"
 #include "world/behaviour.hpp"
 #include "world/partition.hpp"
@@ -26,6 +27,10 @@ struct crowd_partition_setup {
   /// The snapshot of tick 0 and the pedestrians of this strip in it.
   std::shared_ptr<const world::snapshot> initial;
   std::vector<world::pedestrian> pedestrians;
+  /// Set on a worker (docs/distributed.md, "The crowd on the workers"): the worker's board,
+  /// where the partition reads each tick's snapshot (`initial` is then null). Such a partition
+  /// keeps its own pedestrians, reports `partition_states` and is sent `partition_arrivals`.
+  std::shared_ptr<snapshot_board> board;
 };
 
 /// Spawns the actor of one crowd partition (docs/world.md, "Stepping, partitions, spawning").
@@ -36,6 +41,11 @@ struct crowd_partition_setup {
 /// before the partition's next tick with `(world_update_atom, mail_stamp, world_update)`:
 /// the snapshot of world tick t + 1 and the pedestrians it steps next (its own, hand-overs,
 /// newcomers). The coordinator's handle comes first, as `(world_attach_atom, actor)`.
+///
+/// On a worker (`setup.board` set) the same tick crosses less: the snapshot is the board's
+/// (rebuilt there from the world's delta before the tick), the report is
+/// `(world_report_atom, mail_stamp, partition_states)` and the answer
+/// `(world_update_atom, mail_stamp, partition_arrivals)`, stepped after the pedestrians it kept.
 caf::actor spawn_crowd_partition(caf::actor_system& system, crowd_partition_setup setup);
 
 }  // namespace argus::actors

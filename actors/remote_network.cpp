@@ -90,7 +90,8 @@ void greet_workers(caf::actor_system& system, const std::vector<worker_contact>&
 network_directory spawn_remote_network(caf::actor_system& system, const config::scenario& scenario,
                                        const protocol::topology& topo, const caf::actor& clock,
                                        const std::vector<worker_contact>& workers,
-                                       worker_setup setup, worker_loss on_loss) {
+                                       worker_setup setup, worker_loss on_loss,
+                                       const std::vector<bool>& steps_crowd) {
   const auto timeout = std::chrono::milliseconds(worker_setup_timeout);
   const auto where = place_cameras(scenario, workers.size());
   // Each worker's links, in topology order, and where their handles go; the coordinator's
@@ -116,6 +117,7 @@ network_directory spawn_remote_network(caf::actor_system& system, const config::
       ask_all<std::vector<caf::actor>>(self, workers, timeout, "setting up", [&](std::size_t w) {
         auto mine = setup;
         mine.links = links_of[w];
+        mine.steps_crowd = w < steps_crowd.size() && steps_crowd[w];
         return std::make_tuple(worker_setup_atom_v, std::move(mine));
       });
   for (std::size_t w = 0; w < workers.size(); ++w) {

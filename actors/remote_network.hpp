@@ -35,14 +35,16 @@ void greet_workers(caf::actor_system& system, const std::vector<worker_contact>&
 /// to `clock` in the same order, but spawned by the workers, each camera on the worker
 /// `place_cameras` gives it (`scenario.placement`) and each link where `place_link` puts it
 /// (its first camera's worker, or here when `on_loss` keeps the run going). `setup`
-/// carries the scenario and its files; `anchor` lives as long as the run. The directory's `hosts`
+/// carries the scenario and its files, and worker w steps crowd partitions when `steps_crowd[w]`
+/// (it loads the distance fields); `anchor` lives as long as the run. The directory's `hosts`
 /// says where each camera is, so a camera that recovers from a crash comes back there. Throws
 /// std::runtime_error naming the worker that refused or did not answer.
 network_directory spawn_remote_network(caf::actor_system& system, const config::scenario& scenario,
                                        const protocol::topology& topo, const caf::actor& clock,
                                        const std::vector<worker_contact>& workers,
                                        worker_setup setup,
-                                       worker_loss on_loss = worker_loss::end_run);
+                                       worker_loss on_loss = worker_loss::end_run,
+                                       const std::vector<bool>& steps_crowd = {});
 
 /// Once the run is over: adds what every worker's cameras recorded to `log`, and tells each
 /// worker to end what it hosted. A worker that does not answer within `timeout` is skipped

@@ -278,19 +278,32 @@ run_outcome run_scenario(const config::scenario& scenario, const run_options& op
   caf::actor anchor;
   if (!workers.empty()) anchor = system.spawn(anchor_behavior, 0);
   network_directory net;
+  // Nothing has started when a worker refuses: end what did spawn, here and on the workers.
+  const auto abandon = [&] {
+    for (const auto& a : {clock, recorder, progress, anchor})
+      if (a) caf::anon_send_exit(a, caf::exit_reason::user_shutdown);
+    caf::scoped_actor self{system};
+    for (const auto& w : workers) self->send(w.host, release_atom_v);
+  };
+  // Which worker steps each crowd partition (none: here).
+  std::vector<bool> steps_crowd(workers.size(), false);
+  if (!workers.empty()) {
+    const auto partitions = place_partitions(scenario, workers.size(), options.on_worker_loss);
+    for (const auto& w : partitions) {
+      world_settings.partition_hosts.push_back(
+          w ? partition_host{workers[*w].host, workers[*w].name} : partition_host{});
+      if (w) steps_crowd[*w] = true;
+    }
+  }
   if (workers.empty()) {
     net = spawn_network(system, scenario, topo, clock, std::move(cameras_world));
   } else {
     try {
       net = spawn_remote_network(system, scenario, topo, clock, workers,
                                  setup_for_workers(scenario, options, anchor),
-                                 options.on_worker_loss);
+                                 options.on_worker_loss, steps_crowd);
     } catch (...) {
-      // Nothing has started: end what did spawn, here and on the workers, then say why.
-      for (const auto& a : {clock, recorder, progress, anchor})
-        if (a) caf::anon_send_exit(a, caf::exit_reason::user_shutdown);
-      caf::scoped_actor self{system};
-      for (const auto& w : workers) self->send(w.host, release_atom_v);
+      abandon();
       throw;
     }
   }
@@ -303,8 +316,16 @@ run_outcome run_scenario(const config::scenario& scenario, const run_options& op
     caf::anon_send(clock, join_atom_v, video_participant, video_recorder_participant());
   world_settings.end_tick = cs.end_tick;
   world_settings.trajectories = outcome.output_dir / "trajectories.csv";
-  for (auto& [handle, info] : spawn_world(system, std::move(world_settings)).participants)
-    caf::anon_send(clock, join_atom_v, handle, info);
+  world_actors crowd;
+  try {
+    crowd = spawn_world(system, std::move(world_settings));
+  } catch (...) {
+    for (const auto& a : {script, faults, video_participant, pool.front})
+      if (a) caf::anon_send_exit(a, caf::exit_reason::user_shutdown);
+    abandon();
+    throw;
+  }
+  for (auto& [handle, info] : crowd.participants) caf::anon_send(clock, join_atom_v, handle, info);
   if (!workers.empty()) share_first_snapshot(system, workers, *board->latest());
 
   std::string failure;

@@ -18,6 +18,7 @@
 #include "actors/snapshot_delta.hpp"
 #include "actors/tick_ack.hpp"
 #include "actors/wire_log.hpp"
+#include "actors/wire_partition.hpp"
 #include "actors/wire_world.hpp"
 #include "actors/worker_loss.hpp"
 #include "actors/worker_protocol.hpp"
@@ -58,6 +59,9 @@ CAF_ADD_TYPE_ID(argus, (argus::actors::worker_gather))
 CAF_ADD_TYPE_ID(argus, (argus::actors::lost_worker))
 CAF_ADD_TYPE_ID(argus, (argus::actors::camera_placement))
 CAF_ADD_TYPE_ID(argus, (std::vector<argus::actors::camera_placement>))
+CAF_ADD_TYPE_ID(argus, (argus::actors::partition_placement))
+CAF_ADD_TYPE_ID(argus, (argus::actors::partition_arrivals))
+CAF_ADD_TYPE_ID(argus, (argus::actors::partition_states))
 
 CAF_ADD_ATOM(argus, argus::actors, tick_atom, "tick")
 CAF_ADD_ATOM(argus, argus::actors, join_atom, "join")
@@ -87,5 +91,6 @@ CAF_ADD_ATOM(argus, argus::actors, board_atom, "w_board")
 CAF_ADD_ATOM(argus, argus::actors, take_log_atom, "w_take")
 CAF_ADD_ATOM(argus, argus::actors, release_atom, "w_release")
 CAF_ADD_ATOM(argus, argus::actors, listening_atom, "w_listen")
+CAF_ADD_ATOM(argus, argus::actors, spawn_partition_atom, "w_crowd")
 
 CAF_END_TYPE_ID_BLOCK(argus)

@@ -34,6 +34,23 @@ typename Inspector::result_type inspect(Inspector& f, pedestrian_state& x) {
 }
 
 template <class Inspector>
+typename Inspector::result_type inspect(Inspector& f, rng& x) {
+  return f(x.words());
+}
+
+// A whole pedestrian, mind and generator included, for a crowd partition on a worker
+// (docs/distributed.md, "The crowd on the workers").
+template <class Inspector>
+typename Inspector::result_type inspect(Inspector& f, pedestrian& x) {
+  using actors::as_bits;
+  return f(x.state, x.random, x.agenda, x.agenda_size, x.agenda_next,
+           as_bits(x.preferred_speed_mps), x.field, x.target_index, as_bits(x.point.x()),
+           as_bits(x.point.y()), x.has_point, as_bits(x.timer_s), as_bits(x.best_distance_m),
+           as_bits(x.stalled_s), x.entry_portal, x.entry_stairs, x.flow_exit, as_bits(x.blocked_s),
+           as_bits(x.queued_s));
+}
+
+template <class Inspector>
 typename Inspector::result_type inspect(Inspector& f, event& x) {
   return f(x.tick, x.pedestrian, x.kind, x.goal, x.resource);
 }

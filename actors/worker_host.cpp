@@ -14,6 +14,7 @@
 #include "actors/camera_node.hpp"
 #include "actors/camera_pose_board.hpp"
 #include "actors/camera_world_setup.hpp"
+#include "actors/crowd_partition.hpp"
 #include "actors/link.hpp"
 #include "actors/participant_ids.hpp"
 #include "actors/run_observer.hpp"
@@ -22,6 +23,7 @@
 #include "controller/strategy_registry.hpp"
 #include "fmt/format.h"
 #include "spdlog/spdlog.h"
+#include "world/crowd.hpp"
 
 namespace argus::actors {
 
@@ -91,7 +93,8 @@ struct hosted_run {
   config::scenario scenario;
   std::unique_ptr<setup_files> files;
   std::shared_ptr<eval::observation_log> log;
-  bool stream_log = false;  // worker_setup::stream_log
+  bool stream_log = false;   // worker_setup::stream_log
+  bool steps_crowd = false;  // worker_setup::steps_crowd
   std::shared_ptr<pick_outbox> picks;
   std::shared_ptr<camera_world> world;
   std::vector<caf::actor> spawned;
@@ -136,10 +139,11 @@ caf::result<std::vector<caf::actor>> set_up(host_actor* self, worker_setup& setu
     run.files = std::make_unique<setup_files>();
     run.scenario = config::parse_scenario(setup.scenario_yaml, "the coordinator's scenario");
     controller::resolve_strategy(run.scenario);
-    // Cameras only look at the station: no walker here needs its distance fields, which are
-    // most of a large station's loading time (the coordinator has checked the layout).
+    // Cameras only look at the station: unless crowd partitions step here, no walker needs its
+    // distance fields, which are most of a large station's loading time (the coordinator has
+    // checked the layout).
     world::navigation_settings looked_at;
-    looked_at.fields = false;
+    looked_at.fields = setup.steps_crowd;
     auto station =
         world::station::load(run.files->write("layout.yaml", setup.layout_text), looked_at);
     vision::sensor_model model;
@@ -148,6 +152,7 @@ caf::result<std::vector<caf::actor>> set_up(host_actor* self, worker_setup& setu
           run.files->write("sensor_model.yaml", setup.sensor_model_text).string());
     run.log = std::make_shared<eval::observation_log>(setup.with_visible);
     run.stream_log = setup.stream_log;
+    run.steps_crowd = setup.steps_crowd;
     run.picks = std::make_shared<pick_outbox>();
     run.world = make_camera_world(run.scenario, station, std::move(model),
                                   std::max<std::size_t>(1, st.render_threads), run.log);
@@ -171,6 +176,37 @@ caf::result<std::vector<caf::actor>> set_up(host_actor* self, worker_setup& setu
   }
 }
 
+// Ticked through this host, as its cameras are; watched, so one that dies is not waited for.
+void host_participant(host_actor* self, std::uint64_t id, const caf::actor& actor) {
+  auto& run = *self->state.run;
+  run.spawned.push_back(actor);
+  run.participants[id] = actor;
+  run.participant_of[actor.address()] = id;
+  self->monitor(actor);
+}
+
+caf::result<caf::actor> spawn_partition(host_actor* self, partition_placement& placed) {
+  auto& st = self->state;
+  if (!st.run)
+    return refuse(self, fmt::format("worker {} has no run to step a crowd partition in", st.name));
+  if (!st.run->steps_crowd)
+    return refuse(self, fmt::format("worker {} was not set up to step the crowd (no distance "
+                                    "fields loaded)",
+                                    st.name));
+  crowd_partition_setup setup;
+  setup.index = placed.index;
+  setup.station = st.run->world->station;
+  setup.bounds = {placed.min_x_m, placed.max_x_m};
+  setup.behaviour = world::crowd_settings::from(st.run->scenario).behaviour;
+  setup.pedestrians = std::move(placed.pedestrians);
+  setup.board = st.run->world->board;
+  spdlog::info("worker {}: stepping crowd partition {} ({} pedestrians at the start)", st.name,
+               placed.index, setup.pedestrians.size());
+  auto partition = spawn_crowd_partition(self->system(), std::move(setup));
+  host_participant(self, participant_ids::crowd_partition(placed.index), partition);
+  return partition;
+}
+
 caf::result<std::vector<caf::actor>> spawn_cameras(host_actor* self,
                                                    std::vector<camera_placement>& cameras) {
   auto& st = self->state;
@@ -188,13 +224,7 @@ caf::result<std::vector<caf::actor>> spawn_cameras(host_actor* self,
     for (auto& l : c.links) links[l.neighbour] = attached_link{l.participant, std::move(l.handle)};
     auto node =
         spawn_camera_node(self->system(), st.run->scenario, *it, std::move(links), st.run->world);
-    st.run->spawned.push_back(node);
-    // Ticked through this host (the clock's sub-clock); watched, so a camera that dies is not
-    // waited for.
-    const auto id = participant_ids::camera(c.camera);
-    st.run->participants[id] = node;
-    st.run->participant_of[node.address()] = id;
-    self->monitor(node);
+    host_participant(self, participant_ids::camera(c.camera), node);
     out.push_back(std::move(node));
   }
   return out;
@@ -279,6 +309,9 @@ caf::behavior worker_host(host_actor* self, std::string name, std::size_t render
       [self](worker_setup_atom, worker_setup& setup) { return set_up(self, setup); },
       [self](spawn_cameras_atom, std::vector<camera_placement>& cameras) {
         return spawn_cameras(self, cameras);
+      },
+      [self](spawn_partition_atom, partition_placement& placed) {
+        return spawn_partition(self, placed);
       },
       [self](gather_atom) -> worker_gather {
         auto& st = self->state;

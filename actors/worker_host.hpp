@@ -31,6 +31,8 @@ const char* argus_version();
 ///   of its own) and spawns the setup's links; answers their handles in the setup's order;
 /// - `(spawn_cameras_atom, std::vector<camera_placement>)` -> `std::vector<caf::actor>`: spawns
 ///   those camera nodes attached to their links (also for a camera that recovers from a crash);
+/// - `(spawn_partition_atom, partition_placement)` -> `caf::actor`: spawns a crowd partition that
+///   reads its worker's board (a setup with `steps_crowd`, which loaded the distance fields);
 /// - every tick, in phase network, `(gather_atom)` -> `worker_gather`: the picks its cameras
 ///   made since it was last asked, by task, and with `--video` each camera's latest pose; then
 ///   `(board_atom, serialized_delta, std::vector<eval::task_origin> picks)` -> `done_atom`: the

@@ -17,6 +17,15 @@ namespace argus::actors {
 /// `scenario.placement.policy` says how (docs/distributed.md, "Placement").
 std::map<int, std::size_t> place_cameras(const config::scenario& scenario, std::size_t workers);
 
+/// Which worker steps each crowd partition, by index (`scenario.world.partitions` strips, west
+/// to east), none for the coordinator: with `placement.crowd: workers`, consecutive strips in
+/// blocks, worker w taking partitions i with i * workers / partitions == w (fewer partitions
+/// than workers leave the last workers without); all on the coordinator with
+/// `placement.crowd: coordinator`, or when the run survives lost workers (a lost partition
+/// would take its pedestrians with it).
+std::vector<std::optional<std::size_t>> place_partitions(const config::scenario& scenario,
+                                                         std::size_t workers, worker_loss on_loss);
+
 /// Which worker hosts the link between cameras `a` and `b`: camera `a`'s, or none (the
 /// coordinator) when the run survives lost workers and `b` is on another worker. A link must
 /// outlive each camera whose hand-overs it owes: a lost worker then takes with it only links

@@ -42,6 +42,9 @@ struct worker_setup {
   /// rather than all at the end: a run that survives a lost worker keeps its frames up to the
   /// loss.
   bool stream_log = false;
+  /// Whether it steps crowd partitions (`placement.crowd: workers`): then it loads the station
+  /// with the distance fields its walkers descend.
+  bool steps_crowd = false;
   std::vector<link_placement> links;
   /// An actor that lives as long as the coordinator's run: when it goes (the run ended, the
   /// coordinator died or its connection broke), the worker ends what it hosted.
@@ -51,7 +54,7 @@ struct worker_setup {
 template <class Inspector>
 typename Inspector::result_type inspect(Inspector& f, worker_setup& x) {
   return f(x.scenario_yaml, x.layout_text, x.sensor_model_text, x.with_visible, x.with_poses,
-           x.stream_log, x.links, x.coordinator);
+           x.stream_log, x.steps_crowd, x.links, x.coordinator);
 }
 
 /// One of a camera's links, as the camera node is attached to it (attached_link).

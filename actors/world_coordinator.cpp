@@ -63,6 +63,8 @@ struct coordinator_setup {
   /// Null for none; shared only to pass it into the actor.
   std::shared_ptr<trajectory_file> trajectories;
   std::vector<caf::actor> partitions;
+  /// By partition: whether it steps on a worker (it keeps its own pedestrians there).
+  std::vector<bool> on_worker;
   std::vector<std::pair<caf::actor, std::uint64_t>> snapshot_observers;
   std::shared_ptr<snapshot_board> board;
   std::vector<caf::actor> remote_boards;
@@ -140,6 +142,19 @@ void emit_events(tick_context& ctx, const world::snapshot& frame) {
   }
 }
 
+// A partition on a worker reported only the states of those it kept: here they stand in for
+// whole pedestrians, whose states are all the merge reads.
+partition_report report_of(partition_states states) {
+  partition_report out;
+  out.index = states.index;
+  out.result.pedestrians.resize(states.kept.size());
+  for (std::size_t k = 0; k < states.kept.size(); ++k)
+    out.result.pedestrians[k].state = std::move(states.kept[k]);
+  out.result.handed_over = std::move(states.handed_over);
+  out.result.events = std::move(states.events);
+  return out;
+}
+
 void step_world(caf::stateful_actor<world_coordinator_state>* self, tick_context& ctx,
                 std::vector<std::pair<mail_stamp, partition_report>> due) {
   auto& st = self->state;
@@ -166,9 +181,11 @@ void step_world(caf::stateful_actor<world_coordinator_state>* self, tick_context
   write_trajectories(setup.trajectories, *st.current, setup.end_tick);
   if (setup.board) setup.board->publish(st.current);
   emit_events(ctx, *st.current);
-  // Redistribute in world::crowd::step's order: own, handed over, newcomers.
+  // Redistribute in world::crowd::step's order: own, handed over, newcomers. A partition on
+  // a worker kept its own: it is sent the others only.
   std::vector<std::vector<world::pedestrian>> owned(count);
-  for (std::size_t i = 0; i < count; ++i) owned[i] = std::move(results[i].pedestrians);
+  for (std::size_t i = 0; i < count; ++i)
+    if (!setup.on_worker[i]) owned[i] = std::move(results[i].pedestrians);
   for (auto& r : results)
     for (auto& p : r.handed_over)
       owned[world::owner_of(setup.bounds, p.state.position)].push_back(std::move(p));
@@ -177,8 +194,12 @@ void step_world(caf::stateful_actor<world_coordinator_state>* self, tick_context
   for (std::size_t i = 0; i < count; ++i) {
     mail_stamp stamp{ctx.tick(), static_cast<std::uint8_t>(st.info.tick_phase), st.info.id,
                      st.sent++};
-    self->send(setup.partitions[i], world_update_atom_v, stamp,
-               world_update{st.current, std::move(owned[i])});
+    if (setup.on_worker[i])
+      self->send(setup.partitions[i], world_update_atom_v, stamp,
+                 partition_arrivals{std::move(owned[i])});
+    else
+      self->send(setup.partitions[i], world_update_atom_v, stamp,
+                 world_update{st.current, std::move(owned[i])});
     ctx.sent_mail_to(participant_ids::crowd_partition(i));
   }
   for (const auto& [observer, id] : setup.snapshot_observers) {
@@ -325,6 +346,9 @@ caf::behavior world_coordinator(coordinator_actor* self, coordinator_setup setup
       [self](world_report_atom, const mail_stamp& stamp, partition_report& report) {
         self->state.reports.put(stamp, std::move(report));
       },
+      [self](world_report_atom, const mail_stamp& stamp, partition_states& states) {
+        self->state.reports.put(stamp, report_of(std::move(states)));
+      },
       [self](tick_atom, std::int64_t tick, std::uint8_t p, std::uint32_t) {
         auto& st = self->state;
         tick_context ctx(st.info.id, st.info.name, tick, st.info.tick_phase);
@@ -376,8 +400,40 @@ world_actors spawn_world(caf::actor_system& system, world_run_settings settings)
   if (settings.board) settings.board->publish(snapshot0);
 
   world_actors out;
-  std::vector<caf::actor> partitions;
-  for (std::size_t i = 0; i < bounds.size(); ++i) {
+  const auto count = bounds.size();
+  std::vector<caf::actor> partitions(count);
+  std::vector<bool> on_worker(count, false);
+  std::vector<participant_info> infos;
+  for (std::size_t i = 0; i < count; ++i) {
+    infos.push_back(crowd_partition_participant(i));
+    if (i < settings.partition_hosts.size() && settings.partition_hosts[i].host) {
+      on_worker[i] = true;
+      infos[i].host = settings.partition_hosts[i].name;
+    }
+  }
+  // The workers' partitions first: a worker that refuses leaves nothing spawned here.
+  {
+    caf::scoped_actor self{system};
+    for (std::size_t i = 0; i < count; ++i) {
+      if (!on_worker[i]) continue;
+      const auto& where = settings.partition_hosts[i];
+      std::string failure;
+      // As long as a worker may take to set up (remote_network.hpp, worker_setup_timeout).
+      self->request(
+              where.host, std::chrono::seconds(30), spawn_partition_atom_v,
+              partition_placement{i, bounds[i].min_x_m, bounds[i].max_x_m, std::move(owned[i])})
+          .receive([&](caf::actor& spawned) { partitions[i] = std::move(spawned); },
+                   [&](caf::error& err) {
+                     failure = err == caf::sec::request_timeout ? "no answer within 30 s"
+                                                                : system.render(err);
+                   });
+      if (!failure.empty())
+        throw std::runtime_error(
+            fmt::format("worker {} (crowd partition {}): {}", where.name, i, failure));
+    }
+  }
+  for (std::size_t i = 0; i < count; ++i) {
+    if (on_worker[i]) continue;
     crowd_partition_setup ps;
     ps.index = i;
     ps.station = settings.station;
@@ -385,19 +441,19 @@ world_actors spawn_world(caf::actor_system& system, world_run_settings settings)
     ps.behaviour = cs.behaviour;
     ps.initial = snapshot0;
     ps.pedestrians = std::move(owned[i]);
-    partitions.push_back(spawn_crowd_partition(system, std::move(ps)));
+    partitions[i] = spawn_crowd_partition(system, std::move(ps));
   }
   auto coordinator = system.spawn(
       world_coordinator,
       coordinator_setup{settings.station, bounds, std::move(spawner), cs.behaviour.tick_s,
                         snapshot0, settings.end_tick, std::move(trajectories), partitions,
-                        std::move(settings.snapshot_observers), settings.board,
+                        on_worker, std::move(settings.snapshot_observers), settings.board,
                         std::move(settings.remote_boards), std::move(settings.picks_gathered),
                         std::move(settings.poses_gathered), std::move(settings.log_gathered),
                         settings.on_worker_loss});
   for (std::size_t i = 0; i < partitions.size(); ++i) {
     caf::anon_send(partitions[i], world_attach_atom_v, coordinator);
-    out.participants.emplace_back(partitions[i], crowd_partition_participant(i));
+    out.participants.emplace_back(partitions[i], infos[i]);
   }
   out.participants.emplace_back(coordinator, world_coordinator_participant());
   return out;

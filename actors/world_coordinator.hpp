@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -23,6 +24,14 @@ namespace argus::actors {
 /// How the world coordinator takes part in the clock: phase network, on demand (woken by the
 /// partitions' reports, so it runs in the same tick, right after them).
 participant_info world_coordinator_participant();
+
+/// A worker that steps a crowd partition (docs/distributed.md, "The crowd on the workers").
+struct partition_host {
+  /// Its host (spawn_worker_host); null: the partition steps here.
+  caf::actor host;
+  /// Its name (HOST:PORT), which the partition's participant carries, so the worker ticks it.
+  std::string name;
+};
 
 /// What the world of a run needs.
 struct world_run_settings {
@@ -55,6 +64,9 @@ struct world_run_settings {
   std::function<void(eval::observation_log::contents)> log_gathered;
   /// A lost worker under `worker_loss::crash_nodes`: the world goes on with the others.
   worker_loss on_worker_loss = worker_loss::end_run;
+  /// Where each crowd partition steps, by index (`placement.crowd: workers`); empty, or a
+  /// null host, for here. A worker's partition is spawned there (`spawn_partition_atom`).
+  std::vector<partition_host> partition_hosts;
 };
 
 /// The actors of a run's crowd, to join to the clock.
@@ -78,6 +90,10 @@ struct world_actors {
 ///
 /// The attachments (`(world_attach_atom, actor)` to each partition) are sent from the calling
 /// thread, so they precede any tick when the caller joins the actors before `start`.
+///
+/// A partition placed on a worker (`settings.partition_hosts`) is spawned there, from the
+/// calling thread, before any here; throws std::runtime_error naming the worker that refuses
+/// or does not answer, having ended nothing (the caller ends the run's other actors).
 world_actors spawn_world(caf::actor_system& system, world_run_settings settings);
 
 }  // namespace argus::actors

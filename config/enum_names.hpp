@@ -155,6 +155,15 @@ struct enum_names<placement_policy> {
   }};
 };
 
+/// Names for placement.crowd.
+template <>
+struct enum_names<crowd_placement> {
+  static constexpr std::array<enum_entry<crowd_placement>, 2> entries{{
+      {crowd_placement::workers, "workers"},
+      {crowd_placement::coordinator, "coordinator"},
+  }};
+};
+
 /// How an operator task names its target, as the event log writes it.
 template <>
 struct enum_names<task_target> {

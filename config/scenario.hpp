@@ -445,8 +445,17 @@ enum class placement_policy {
   id,
 };
 
+/// Where a distributed run steps its crowd partitions (docs/distributed.md, "Placement").
+enum class crowd_placement {
+  /// Each worker steps a block of consecutive strips, beside its cameras.
+  workers,
+  /// The coordinator steps them all, as in one process.
+  coordinator,
+};
+
 struct placement_settings {
   placement_policy policy = placement_policy::region;
+  crowd_placement crowd = crowd_placement::workers;
   friend bool operator==(const placement_settings&, const placement_settings&) = default;
 };
 

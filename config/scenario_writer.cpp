@@ -295,6 +295,7 @@ std::string to_yaml(const scenario& s) {
 
   out.line(0, "placement:");
   out.entry(1, "policy", yaml_name(s.placement.policy));
+  out.entry(1, "crowd", yaml_name(s.placement.crowd));
   return out.take();
 }
 

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <cstdint>
 
 namespace argus::world {
@@ -49,10 +50,13 @@ class rng {
   /// true with probability `p`.
   bool chance(double p) noexcept { return uniform() < p; }
 
+  /// The four state words: a generator carried to another process goes on with the same draws.
+  std::array<std::uint64_t, 4>& words() noexcept { return state_; }
+
  private:
   static std::uint64_t rotl(std::uint64_t x, int k) noexcept { return (x << k) | (x >> (64 - k)); }
 
-  std::uint64_t state_[4];
+  std::array<std::uint64_t, 4> state_;
 };
 
 }  // namespace argus::world

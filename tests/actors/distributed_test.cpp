@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <string>
@@ -20,7 +21,9 @@
 #include "actors/worker_host.hpp"
 #include "actors/worker_pool.hpp"
 #include "config/scenario_loader.hpp"
+#include "config/scenario_writer.hpp"
 #include "tests/actors/file_text.hpp"
+#include "world/layout_loader.hpp"
 
 namespace argus::actors::testing {
 namespace {
@@ -134,24 +137,36 @@ TEST(distributed, one_two_and_three_workers_write_what_one_process_writes) {
     config::placement_policy how;
     // Under crash_nodes the links between workers run here and the logs come every tick.
     worker_loss on_loss;
+    // The crowd's partitions step on the workers (two of three host one) or here.
+    config::crowd_placement crowd;
+    unsigned partitions;
   };
-  const std::vector<split> splits{{1, config::placement_policy::region, worker_loss::end_run},
-                                  {2, config::placement_policy::region, worker_loss::end_run},
-                                  {3, config::placement_policy::region, worker_loss::end_run},
-                                  {3, config::placement_policy::id, worker_loss::end_run},
-                                  {3, config::placement_policy::id, worker_loss::crash_nodes}};
-  for (const auto& [n, how, on_loss] : splits) {
+  using enum config::crowd_placement;
+  const std::vector<split> splits{
+      {1, config::placement_policy::region, worker_loss::end_run, workers, 2},
+      {2, config::placement_policy::region, worker_loss::end_run, workers, 2},
+      {3, config::placement_policy::region, worker_loss::end_run, workers, 2},
+      {3, config::placement_policy::id, worker_loss::end_run, workers, 5},
+      {2, config::placement_policy::id, worker_loss::end_run, coordinator, 2},
+      {3, config::placement_policy::id, worker_loss::crash_nodes, workers, 2}};
+  for (const auto& [n, how, on_loss, crowd, partitions] : splits) {
     const auto dir = scratch("w" + std::to_string(n));
     run_options options;
     options.workers = std::make_shared<local_workers>(n);
     options.on_worker_loss = on_loss;
     auto s = replay_faults(dir);
     s.placement.policy = how;
+    s.placement.crowd = crowd;
+    // The partitions do not change the run (world::partition_step): more than two put some
+    // hand-overs between two partitions of one worker.
+    s.world.partitions = partitions;
     auto outcome = run_scenario(s, options);
     EXPECT_TRUE(outcome.result.failure.empty()) << outcome.result.failure;
     EXPECT_TRUE(outcome.result.lost_workers.empty());
-    EXPECT_EQ(outputs(dir), alone) << n << " workers, placement " << static_cast<int>(how)
-                                   << ", on loss " << static_cast<int>(on_loss);
+    EXPECT_EQ(outputs(dir), alone)
+        << n << " workers, placement " << static_cast<int>(how) << ", on loss "
+        << static_cast<int>(on_loss) << ", crowd " << static_cast<int>(crowd) << ", " << partitions
+        << " partitions";
     std::filesystem::remove_all(dir);
   }
   std::filesystem::remove_all(alone_dir);
@@ -294,6 +309,42 @@ TEST(distributed, placement_gives_every_worker_a_run_of_neighbours) {
   EXPECT_EQ(by_id.at(ids.front()), 0u);
   EXPECT_EQ(by_id.at(ids.back()), 1u);
   EXPECT_THROW(place_cameras(s, s.cameras.size() + 1), std::invalid_argument);
+}
+
+TEST(distributed, crowd_partitions_go_to_the_workers_in_blocks_of_strips) {
+  auto s = replay_faults(scratch("crowd-placement"));
+  using w = std::optional<std::size_t>;
+  s.world.partitions = 8;
+  EXPECT_EQ(place_partitions(s, 2, worker_loss::end_run),
+            (std::vector<w>{0u, 0u, 0u, 0u, 1u, 1u, 1u, 1u}));
+  EXPECT_EQ(place_partitions(s, 3, worker_loss::end_run),
+            (std::vector<w>{0u, 0u, 0u, 1u, 1u, 1u, 2u, 2u}));
+  s.world.partitions = 2;
+  EXPECT_EQ(place_partitions(s, 4, worker_loss::end_run), (std::vector<w>{0u, 2u}));
+  // Here: when asked, and when a lost worker must not take pedestrians with it.
+  EXPECT_EQ(place_partitions(s, 4, worker_loss::crash_nodes), (std::vector<w>{w{}, w{}}));
+  s.placement.crowd = config::crowd_placement::coordinator;
+  EXPECT_EQ(place_partitions(s, 4, worker_loss::end_run), (std::vector<w>{w{}, w{}}));
+}
+
+TEST(distributed, a_worker_set_up_without_the_crowd_refuses_a_partition) {
+  system_config cfg(1);
+  caf::actor_system system{cfg};
+  auto host = spawn_worker_host(system, "local-1", 1);
+  const auto s = replay_faults(scratch("no-crowd"));
+  worker_setup setup;
+  setup.scenario_yaml = config::to_yaml(s);
+  setup.layout_text = file_text(world::layout_path(s));
+  caf::scoped_actor self{system};
+  std::string failure;
+  self->request(host, std::chrono::seconds(30), worker_setup_atom_v, setup)
+      .receive([](std::vector<caf::actor>&) {},
+               [&](caf::error& err) { failure = system.render(err); });
+  ASSERT_EQ(failure, "");
+  self->request(host, std::chrono::seconds(30), spawn_partition_atom_v, partition_placement{})
+      .receive([](caf::actor&) {}, [&](caf::error& err) { failure = system.render(err); });
+  EXPECT_NE(failure.find("not set up to step the crowd"), std::string::npos) << failure;
+  self->send_exit(host, caf::exit_reason::user_shutdown);
 }
 
 TEST(distributed, a_worker_of_another_version_is_refused_naming_both) {

@@ -10,8 +10,10 @@
 #include <vector>
 
 #include "actors/wire_log.hpp"
+#include "actors/wire_partition.hpp"
 #include "caf/binary_deserializer.hpp"
 #include "caf/binary_serializer.hpp"
+#include "world/behaviour.hpp"
 
 namespace argus::actors::testing {
 namespace {
@@ -50,6 +52,49 @@ TEST(wire_double, a_pose_and_a_look_cross_bit_for_bit) {
   EXPECT_TRUE(std::signbit(look_back.box.x));
   EXPECT_EQ(look_back.iou, 0.1 + 0.2);
   EXPECT_EQ(look_back.box.height, 3.0);
+}
+
+TEST(wire_double, a_whole_pedestrian_crosses_and_draws_what_it_would_have_drawn) {
+  // A crowd partition on a worker is handed whole pedestrians: mind, timers and generator.
+  world::speed_distribution speeds;
+  auto p = world::make_pedestrian(17, 99, {12.5, -0.0}, 2, -1, speeds);
+  p.state.velocity = {-0.0, 0.25};
+  p.point = {-0.0, 3.0};
+  p.has_point = true;
+  p.field = 5;
+  p.target_index = 3;
+  p.timer_s = 0.1 + 0.2;
+  p.best_distance_m = std::numeric_limits<double>::infinity();
+  p.stalled_s = -0.0;
+  p.blocked_s = 1.5;
+  p.queued_s = 2.25;
+  p.flow_exit = 4;
+  partition_arrivals sent;
+  sent.pedestrians.push_back(p);
+  auto back = crossed(sent);
+  ASSERT_EQ(back.pedestrians.size(), 1u);
+  auto& q = back.pedestrians[0];
+  EXPECT_EQ(q.state, p.state);
+  EXPECT_TRUE(std::signbit(q.state.position.y()));
+  EXPECT_TRUE(std::signbit(q.state.velocity.x()));
+  EXPECT_TRUE(std::signbit(q.point.x()));
+  EXPECT_TRUE(std::signbit(q.stalled_s));
+  EXPECT_EQ(q.agenda, p.agenda);
+  EXPECT_EQ(q.agenda_size, p.agenda_size);
+  EXPECT_EQ(q.agenda_next, p.agenda_next);
+  EXPECT_EQ(q.preferred_speed_mps, p.preferred_speed_mps);
+  EXPECT_EQ(q.field, 5);
+  EXPECT_EQ(q.target_index, 3);
+  EXPECT_EQ(q.point, p.point);
+  EXPECT_TRUE(q.has_point);
+  EXPECT_EQ(q.timer_s, 0.1 + 0.2);
+  EXPECT_EQ(q.best_distance_m, std::numeric_limits<double>::infinity());
+  EXPECT_EQ(q.blocked_s, 1.5);
+  EXPECT_EQ(q.queued_s, 2.25);
+  EXPECT_EQ(q.entry_portal, 2);
+  EXPECT_EQ(q.entry_stairs, -1);
+  EXPECT_EQ(q.flow_exit, 4);
+  for (int k = 0; k < 5; ++k) EXPECT_EQ(q.random.next(), p.random.next());
 }
 
 }  // namespace

@@ -4,7 +4,8 @@
 #   distributed_loopback.sh ARGUS SOURCE_DIR OUT
 # - replay_faults.yaml (pixels, every fault kind) with 1, 2 and 3 workers writes the same
 #   events.jsonl, trajectories.csv, poses.csv, tracks.csv and metrics.json (less its wall time)
-#   as one process, and with 2 workers the same --video;
+#   as one process, and with 2 workers the same --video; the crowd's partitions step on the
+#   workers (five partitions on three workers too), or on the coordinator when asked;
 # - a worker killed mid-run: the coordinator ends within 5 s with exit 1, naming the worker and
 #   the last whole tick, and every line of events.jsonl is whole;
 # - the same under --on-worker-loss crash-nodes: exit 0, the run goes on to its end, the lost
@@ -68,6 +69,26 @@ for n in 1 2 3; do
   same_outputs "$OUT/alone" "$OUT/w$n"
   echo "$n workers: the same outputs as one process"
 done
+# The crowd stepped on the workers: replay_faults.yaml's two partitions on the first two.
+for i in 1 2; do
+  grep -q "stepping crowd partition $((i - 1)) " "$OUT/worker-$i.log" ||
+    fail "worker $i did not step crowd partition $((i - 1)): $(cat "$OUT/worker-$i.log")"
+done
+# Five partitions on three workers (two, two and one): hand-overs between partitions of one
+# worker and of two; then the crowd on the coordinator.
+run --set run.output_dir="$OUT/five" --workers "$list" --set world.partitions=5 >"$OUT/five.txt" 2>&1 ||
+  fail "five partitions: $(tail -3 "$OUT/five.txt")"
+run --set run.output_dir="$OUT/five-alone" --set world.partitions=5 >"$OUT/five-alone.txt" 2>&1 ||
+  fail "five partitions in one process: $(tail -3 "$OUT/five-alone.txt")"
+same_outputs "$OUT/alone" "$OUT/five-alone"
+same_outputs "$OUT/alone" "$OUT/five"
+[ "$(grep -c "stepping crowd partition" "$OUT/worker-3.log")" = 1 ] ||
+  fail "worker 3 did not step one of five partitions: $(cat "$OUT/worker-3.log")"
+echo "3 workers stepping five crowd partitions: the same outputs as one process"
+run --set run.output_dir="$OUT/crowd-here" --workers "$list" --set placement.crowd=coordinator \
+  >"$OUT/crowd-here.txt" 2>&1 || fail "the crowd on the coordinator: $(tail -3 "$OUT/crowd-here.txt")"
+same_outputs "$OUT/alone" "$OUT/crowd-here"
+echo "3 workers, the crowd on the coordinator: the same outputs as one process"
 # The same workers serve the next run: by id this time.
 run --set run.output_dir="$OUT/by-id" --workers "$list" --set placement.policy=id >"$OUT/by-id.txt" 2>&1 ||
   fail "placement id: $(tail -3 "$OUT/by-id.txt")"

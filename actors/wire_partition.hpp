@@ -1,0 +1,60 @@
+#pragma once
+
+// What crosses between the world coordinator and a crowd partition that steps on a worker
+// (docs/distributed.md, "The crowd on the workers"). A partition there keeps its own
+// pedestrians from tick to tick and reads the snapshot from its worker's board, so only
+// hand-overs, newcomers and what the snapshot needs travel. Inspectors and type IDs
+// (actors/type_ids.hpp) let the middleman carry them; doubles cross as their bits.
+
+#include <cstdint>
+#include <vector>
+
+#include "actors/wire_double.hpp"
+#include "actors/wire_world.hpp"
+#include "world/event.hpp"
+#include "world/pedestrian.hpp"
+
+namespace argus::actors {
+
+/// A crowd partition a worker spawns: its index, its strip (`world::partition_bounds`) and the
+/// pedestrians it owns in the snapshot of tick 0.
+struct partition_placement {
+  std::uint64_t index = 0;
+  double min_x_m = 0.0;
+  double max_x_m = 0.0;
+  std::vector<world::pedestrian> pedestrians;
+};
+
+template <class Inspector>
+typename Inspector::result_type inspect(Inspector& f, partition_placement& x) {
+  return f(x.index, as_bits(x.min_x_m), as_bits(x.max_x_m), x.pedestrians);
+}
+
+/// What the coordinator sends a partition on a worker after each tick: the pedestrians handed
+/// over to it (by partition of origin, each in id order), then its newcomers. It steps them
+/// after its own, as `world::crowd::step` does.
+struct partition_arrivals {
+  std::vector<world::pedestrian> pedestrians;
+};
+
+template <class Inspector>
+typename Inspector::result_type inspect(Inspector& f, partition_arrivals& x) {
+  return f(x.pedestrians);
+}
+
+/// What a partition on a worker reports after stepping: the public states of its own that
+/// stayed in its strip (in id order; their minds stay with it), whole those that crossed out,
+/// and the tick's events.
+struct partition_states {
+  std::uint64_t index = 0;
+  std::vector<world::pedestrian_state> kept;
+  std::vector<world::pedestrian> handed_over;
+  std::vector<world::event> events;
+};
+
+template <class Inspector>
+typename Inspector::result_type inspect(Inspector& f, partition_states& x) {
+  return f(x.index, x.kept, x.handed_over, x.events);
+}
+
+}  // namespace argus::actors
