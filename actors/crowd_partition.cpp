@@ -50,8 +50,7 @@ void step_and_report(partition_actor* self, tick_context& ctx, const world::snap
   if (st.setup.board) {
     partition_states report;
     report.index = st.setup.index;
-    report.kept.reserve(result.pedestrians.size());
-    for (const auto& each : result.pedestrians) report.kept.push_back(each.state);
+    report.kept = subset_between(previous, result.pedestrians);
     report.handed_over = std::move(result.handed_over);
     report.events = std::move(result.events);
     st.setup.pedestrians = std::move(result.pedestrians);
@@ -59,7 +58,7 @@ void step_and_report(partition_actor* self, tick_context& ctx, const world::snap
   } else {
     st.setup.pedestrians.clear();
     self->send(st.coordinator, world_report_atom_v, stamp,
-               partition_report{st.setup.index, std::move(result)});
+               partition_report{st.setup.index, std::move(result), std::nullopt});
   }
   ctx.sent_mail_to(participant_ids::world_coordinator);
 }

@@ -184,4 +184,74 @@ std::shared_ptr<const world::snapshot> apply_delta(const world::station& where,
                                                  std::move(people), std::move(delta.events));
 }
 
+subset_delta subset_between(const world::snapshot& before, std::span<const world::pedestrian> now) {
+  const auto old = before.pedestrians();
+  subset_delta d;
+  d.changes.assign(old.size(), subset_delta::absent);
+  d.moved.reserve(now.size());
+  std::size_t j = 0;
+  for (const auto& each : now) {
+    const auto& p = each.state;
+    while (j < old.size() && old[j].id < p.id) ++j;
+    if (j == old.size() || old[j].id != p.id)
+      throw std::invalid_argument(
+          fmt::format("pedestrian {} is not in the snapshot of tick {}, or out of id order", p.id,
+                      before.tick()));
+    const auto& q = old[j];
+    auto& change = d.changes[j++];
+    if (!same_slow(p, q)) {
+      change = static_cast<std::uint8_t>(pedestrian_change::changed);
+      d.whole.push_back(p);
+      continue;
+    }
+    auto m = moved_of(p);
+    if (m == moved_of(q)) {
+      change = static_cast<std::uint8_t>(pedestrian_change::kept);
+      continue;
+    }
+    change = static_cast<std::uint8_t>(pedestrian_change::moved);
+    d.moved.push_back(m);
+  }
+  return d;
+}
+
+std::vector<pedestrian_state> apply_subset(const world::snapshot& before, subset_delta delta) {
+  const auto old = before.pedestrians();
+  if (delta.changes.size() != old.size())
+    out_of_step(
+        fmt::format("a partition's states are for {} pedestrians, the snapshot of tick {} "
+                    "has {}",
+                    delta.changes.size(), before.tick(), old.size()));
+  std::vector<pedestrian_state> out;
+  out.reserve(delta.moved.size() + delta.whole.size());
+  std::size_t next_moved = 0;
+  std::size_t next_whole = 0;
+  for (std::size_t j = 0; j < old.size(); ++j) {
+    const auto c = delta.changes[j];
+    if (c == subset_delta::absent) continue;
+    switch (static_cast<pedestrian_change>(c)) {
+      case pedestrian_change::kept:
+        out.push_back(old[j]);
+        break;
+      case pedestrian_change::moved:
+        if (next_moved == delta.moved.size()) out_of_step("fewer moves than moved pedestrians");
+        out.push_back(old[j]);
+        move(out.back(), delta.moved[next_moved++]);
+        break;
+      case pedestrian_change::changed:
+        if (next_whole == delta.whole.size()) out_of_step("fewer whole pedestrians than changes");
+        if (delta.whole[next_whole].id != old[j].id)
+          out_of_step(fmt::format("pedestrian {} changed in the place of {}",
+                                  delta.whole[next_whole].id, old[j].id));
+        out.push_back(std::move(delta.whole[next_whole++]));
+        break;
+      default:
+        out_of_step(fmt::format("unknown change {}", static_cast<int>(c)));
+    }
+  }
+  if (next_moved != delta.moved.size() || next_whole != delta.whole.size())
+    out_of_step("records left over");
+  return out;
+}
+
 }  // namespace argus::actors

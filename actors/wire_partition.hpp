@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "actors/snapshot_delta.hpp"
 #include "actors/wire_double.hpp"
 #include "actors/wire_world.hpp"
 #include "world/event.hpp"
@@ -43,11 +44,11 @@ typename Inspector::result_type inspect(Inspector& f, partition_arrivals& x) {
 }
 
 /// What a partition on a worker reports after stepping: the public states of its own that
-/// stayed in its strip (in id order; their minds stay with it), whole those that crossed out,
-/// and the tick's events.
+/// stayed in its strip (their minds stay with it), as changes to the snapshot it stepped from;
+/// whole those that crossed out; and the tick's events.
 struct partition_states {
   std::uint64_t index = 0;
-  std::vector<world::pedestrian_state> kept;
+  subset_delta kept;
   std::vector<world::pedestrian> handed_over;
   std::vector<world::event> events;
 };

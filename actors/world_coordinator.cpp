@@ -142,17 +142,25 @@ void emit_events(tick_context& ctx, const world::snapshot& frame) {
   }
 }
 
-// A partition on a worker reported only the states of those it kept: here they stand in for
-// whole pedestrians, whose states are all the merge reads.
+// A partition on a worker reported only the states of those it kept, as changes to the
+// snapshot it stepped from (`before`): here they stand in for whole pedestrians, whose states
+// are all the merge reads.
 partition_report report_of(partition_states states) {
   partition_report out;
   out.index = states.index;
-  out.result.pedestrians.resize(states.kept.size());
-  for (std::size_t k = 0; k < states.kept.size(); ++k)
-    out.result.pedestrians[k].state = std::move(states.kept[k]);
+  out.kept = std::move(states.kept);
   out.result.handed_over = std::move(states.handed_over);
   out.result.events = std::move(states.events);
   return out;
+}
+
+void read_kept(partition_report& report, const world::snapshot& before) {
+  if (!report.kept) return;
+  auto kept = apply_subset(before, std::move(*report.kept));
+  report.kept.reset();
+  report.result.pedestrians.resize(kept.size());
+  for (std::size_t k = 0; k < kept.size(); ++k)
+    report.result.pedestrians[k].state = std::move(kept[k]);
 }
 
 void step_world(caf::stateful_actor<world_coordinator_state>* self, tick_context& ctx,
@@ -165,6 +173,7 @@ void step_world(caf::stateful_actor<world_coordinator_state>* self, tick_context
   std::size_t reported = 0;
   for (auto& [stamp, report] : due) {
     if (report.index >= count) continue;
+    read_kept(report, *st.current);
     results[report.index] = std::move(report.result);
     ++reported;
   }

@@ -2,8 +2,10 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
+#include "actors/snapshot_delta.hpp"
 #include "caf/allowed_unsafe_message_type.hpp"
 #include "world/partition.hpp"
 #include "world/pedestrian.hpp"
@@ -20,10 +22,14 @@ struct world_update {
   std::vector<world::pedestrian> pedestrians;
 };
 
-/// What a crowd partition sends the coordinator after stepping: its index and its result.
+/// What a crowd partition sends the coordinator after stepping: its index and its result. From
+/// a partition on a worker, the pedestrians it kept come as `kept`, changes to the snapshot it
+/// stepped from, which the coordinator reads into `result.pedestrians` (states only) before
+/// its step.
 struct partition_report {
   std::size_t index = 0;
   world::partition_result result;
+  std::optional<subset_delta> kept;
 };
 
 }  // namespace argus::actors

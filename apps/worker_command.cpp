@@ -31,7 +31,9 @@ extern "C" void request_stop(int) {
 
 void add_worker_command(CLI::App& app, int& result) {
   auto* cmd = app.add_subcommand(
-      "worker", "Host camera nodes and links for runs started elsewhere with argus run --workers");
+      "worker",
+      "Host camera nodes, links and crowd partitions for runs started elsewhere with argus run "
+      "--workers");
   auto args = std::make_shared<worker_arguments>();
   cmd->add_option("--listen", args->listen,
                   "HOST:PORT to listen on (default 127.0.0.1:7001; port 0: any free one; beyond "

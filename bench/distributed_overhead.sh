@@ -4,13 +4,16 @@
 # turn (one process, 2 workers, 4 workers, again ...), ROUNDS times; prints each variant's median
 # wall seconds of the whole `argus run` and its ratio to one process, paired round by round, and
 # checks that every run wrote the one-process events.jsonl.
-#   bench/distributed_overhead.sh [ARGUS] [ROUNDS]
+#   bench/distributed_overhead.sh [ARGUS] [ROUNDS] [RUN OPTIONS...]
+# RUN OPTIONS go to the distributed runs, e.g. `--set placement.crowd=coordinator`.
 # Then the per-tick cost of the cross-process barrier: minimal.yaml (emulated, three cameras,
 # nearly nothing to compute) in one process and with one worker, 1,800 ticks.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 argus="${1:-$root/build/apps/argus}"
 rounds="${2:-3}"
+shift $(($# < 2 ? $# : 2))
+distributed_options=("$@")
 out="$(mktemp -d)"
 pids=()
 trap 'for p in "${pids[@]}"; do kill "$p" 2>/dev/null; done; rm -rf "$out"' EXIT
@@ -41,8 +44,10 @@ compare() {  # compare NAME LABEL SCENARIO DURATION [run options]
              --no-progress "$@")
   for r in $(seq "$rounds"); do
     timed "$out/$name-1" "${run[@]}" --set run.output_dir="$out/$name-run-1"
-    timed "$out/$name-2" "${run[@]}" --set run.output_dir="$out/$name-run-2" --workers "$two"
-    timed "$out/$name-4" "${run[@]}" --set run.output_dir="$out/$name-run-4" --workers "$four"
+    timed "$out/$name-2" "${run[@]}" --set run.output_dir="$out/$name-run-2" --workers "$two" \
+      ${distributed_options[@]+"${distributed_options[@]}"}
+    timed "$out/$name-4" "${run[@]}" --set run.output_dir="$out/$name-run-4" --workers "$four" \
+      ${distributed_options[@]+"${distributed_options[@]}"}
     for n in 2 4; do
       cmp -s "$out/$name-run-1/events.jsonl" "$out/$name-run-$n/events.jsonl" ||
         { echo "$name: $n workers wrote another events.jsonl" >&2; exit 1; }

@@ -15,6 +15,8 @@
 #include <utility>
 #include <vector>
 
+#include "caf/binary_deserializer.hpp"
+#include "caf/binary_serializer.hpp"
 #include "config/scenario_loader.hpp"
 #include "world/crowd.hpp"
 #include "world/layout_loader.hpp"
@@ -163,6 +165,47 @@ TEST(snapshot_delta, a_delta_for_another_snapshot_is_refused) {
   EXPECT_THROW(received(*station, nullptr, delta_between(&before, after)), std::invalid_argument);
   // Bytes that are not a delta.
   EXPECT_THROW(deserialize(serialized_delta{{'n', 'o', 't'}}), std::invalid_argument);
+}
+
+world::pedestrian whole(const world::pedestrian_state& state) {
+  world::pedestrian p;
+  p.state = state;
+  return p;
+}
+
+// A crowd partition on a worker reports the pedestrians it kept as changes to the snapshot it
+// stepped from (wire_partition.hpp): some of its pedestrians, not all; through CAF's serializer.
+TEST(snapshot_delta, a_partitions_kept_pedestrians_cross_as_changes) {
+  auto station = world::station::load(world::layout_path(delta_scenario()));
+  world::snapshot before(
+      *station, 1, std::chrono::duration<double>{0.1},
+      {walker_at(1, 1.0), walker_at(2, 2.0), walker_at(3, 3.0), walker_at(4, 4.0)});
+  auto stopped = walker_at(2, 2.5);
+  stopped.velocity = {-0.0, 0.0};
+  auto seated = walker_at(4, 4.0);
+  seated.doing = world::activity::sitting;
+  const std::vector<world::pedestrian> kept{whole(walker_at(1, 1.0)), whole(stopped),
+                                            whole(seated)};
+  auto delta = subset_between(before, kept);
+  using c = pedestrian_change;
+  EXPECT_EQ(delta.changes,
+            (std::vector<std::uint8_t>{static_cast<std::uint8_t>(c::kept),
+                                       static_cast<std::uint8_t>(c::moved), subset_delta::absent,
+                                       static_cast<std::uint8_t>(c::changed)}));
+  std::vector<char> bytes;
+  caf::binary_serializer sink{nullptr, bytes};
+  ASSERT_FALSE(sink(delta));
+  subset_delta crossed;
+  caf::binary_deserializer source{nullptr, bytes};
+  ASSERT_FALSE(source(crossed));
+  const auto states = apply_subset(before, crossed);
+  ASSERT_EQ(states.size(), 3u);
+  for (std::size_t k = 0; k < 3; ++k) EXPECT_TRUE(states[k] == kept[k].state) << k;
+  EXPECT_TRUE(std::signbit(states[1].velocity.x()));
+  // Applied to another snapshot, or made from one that lacks a pedestrian: refused.
+  world::snapshot fewer(*station, 1, std::chrono::duration<double>{0.1}, {walker_at(1, 1.0)});
+  EXPECT_THROW(apply_subset(fewer, crossed), std::invalid_argument);
+  EXPECT_THROW(subset_between(fewer, kept), std::invalid_argument);
 }
 
 }  // namespace

@@ -72,6 +72,13 @@ TEST(scenario_validation, unknown_top_level_key) {
                      "controller, sensing, tasks, faults, placement); did you mean 'cameras'?"}));
 }
 
+TEST(scenario_validation, where_the_crowd_steps_is_one_of_two_places) {
+  EXPECT_EQ(only_problem(one_camera + "placement: {crowd: cloud}\n"),
+            (problem{"bad.yaml", 3, 20, "placement.crowd",
+                     "expected one of: workers, coordinator, got 'cloud'"}));
+  EXPECT_TRUE(problems_in(one_camera + "placement: {crowd: coordinator}\n").empty());
+}
+
 TEST(scenario_validation, a_key_given_twice) {
   EXPECT_EQ(
       only_problem("run:\n  seed: 1\n  seed: 2\n"),
