@@ -71,6 +71,62 @@ void move(pedestrian_state& p, const moved_state& m) {
   throw std::invalid_argument("a snapshot delta does not fit the snapshot before it: " + what);
 }
 
+// How `p` differs from `q`, the same pedestrian a tick before, with the record that says so
+// appended to `moved` or `whole`.
+pedestrian_change change_of(const pedestrian_state& p, const pedestrian_state& q,
+                            std::vector<moved_state>& moved, std::vector<pedestrian_state>& whole) {
+  if (!same_slow(p, q)) {
+    whole.push_back(p);
+    return pedestrian_change::changed;
+  }
+  auto m = moved_of(p);
+  if (m == moved_of(q)) return pedestrian_change::kept;
+  moved.push_back(m);
+  return pedestrian_change::moved;
+}
+
+// A delta's records, taken in order; out of step when they run out or some are left over.
+class record_reader {
+ public:
+  record_reader(const std::vector<moved_state>& moved, std::vector<pedestrian_state>& whole)
+      : moved_(moved), whole_(whole) {}
+  // `was` after the change `c` (kept, moved or changed).
+  pedestrian_state after(pedestrian_change c, const pedestrian_state& was) {
+    switch (c) {
+      case pedestrian_change::kept:
+        return was;
+      case pedestrian_change::moved: {
+        if (next_moved_ == moved_.size()) out_of_step("fewer moves than moved pedestrians");
+        auto is = was;
+        move(is, moved_[next_moved_++]);
+        return is;
+      }
+      case pedestrian_change::changed: {
+        auto& is = next_whole();
+        if (is.id != was.id)
+          out_of_step(fmt::format("pedestrian {} changed in the place of {}", is.id, was.id));
+        return std::move(is);
+      }
+      default:
+        out_of_step(fmt::format("unknown change {}", static_cast<int>(c)));
+    }
+  }
+  pedestrian_state& next_whole() {
+    if (next_whole_ == whole_.size()) out_of_step("fewer whole pedestrians than changes");
+    return whole_[next_whole_++];
+  }
+  void all_read() const {
+    if (next_moved_ != moved_.size() || next_whole_ != whole_.size())
+      out_of_step("records left over");
+  }
+
+ private:
+  const std::vector<moved_state>& moved_;
+  std::vector<pedestrian_state>& whole_;
+  std::size_t next_moved_ = 0;
+  std::size_t next_whole_ = 0;
+};
+
 }  // namespace
 
 serialized_delta serialize(snapshot_delta& delta) {
@@ -109,20 +165,8 @@ snapshot_delta delta_between(const world::snapshot* before, const world::snapsho
       d.whole.push_back(p);
       continue;
     }
-    const auto& q = old[j];
-    d.gone[j++] = 0;
-    if (!same_slow(p, q)) {
-      d.changes.push_back(static_cast<std::uint8_t>(pedestrian_change::changed));
-      d.whole.push_back(p);
-      continue;
-    }
-    auto m = moved_of(p);
-    if (m == moved_of(q)) {
-      d.changes.push_back(static_cast<std::uint8_t>(pedestrian_change::kept));
-      continue;
-    }
-    d.changes.push_back(static_cast<std::uint8_t>(pedestrian_change::moved));
-    d.moved.push_back(m);
+    d.gone[j] = 0;
+    d.changes.push_back(static_cast<std::uint8_t>(change_of(p, old[j++], d.moved, d.whole)));
   }
   return d;
 }
@@ -137,48 +181,21 @@ std::shared_ptr<const world::snapshot> apply_delta(const world::station& where,
                             delta.gone.size(), before ? before->tick() : 0, old.size()));
   std::vector<pedestrian_state> people;
   people.reserve(delta.changes.size());
+  record_reader records(delta.moved, delta.whole);
   std::size_t j = 0;
-  std::size_t next_moved = 0;
-  std::size_t next_whole = 0;
   const auto stayed = [&]() -> const pedestrian_state& {
     while (j < old.size() && delta.gone[j] != 0) ++j;
     if (j == old.size()) out_of_step("more pedestrians stayed than were there");
     return old[j++];
   };
-  const auto whole = [&]() -> pedestrian_state& {
-    if (next_whole == delta.whole.size()) out_of_step("fewer whole pedestrians than changes");
-    return delta.whole[next_whole++];
-  };
   for (auto c : delta.changes) {
-    switch (static_cast<pedestrian_change>(c)) {
-      case pedestrian_change::kept:
-        people.push_back(stayed());
-        break;
-      case pedestrian_change::moved: {
-        people.push_back(stayed());
-        if (next_moved == delta.moved.size()) out_of_step("fewer moves than moved pedestrians");
-        move(people.back(), delta.moved[next_moved++]);
-        break;
-      }
-      case pedestrian_change::changed: {
-        const auto& was = stayed();
-        auto& is = whole();
-        if (is.id != was.id)
-          out_of_step(fmt::format("pedestrian {} changed in the place of {}", is.id, was.id));
-        people.push_back(std::move(is));
-        break;
-      }
-      case pedestrian_change::arrived:
-        people.push_back(std::move(whole()));
-        break;
-      default:
-        out_of_step(fmt::format("unknown change {}", static_cast<int>(c)));
-    }
+    const auto change = static_cast<pedestrian_change>(c);
+    people.push_back(change == pedestrian_change::arrived ? std::move(records.next_whole())
+                                                          : records.after(change, stayed()));
   }
   while (j < old.size() && delta.gone[j] != 0) ++j;
   if (j != old.size()) out_of_step("a pedestrian before is neither gone nor in it");
-  if (next_moved != delta.moved.size() || next_whole != delta.whole.size())
-    out_of_step("records left over");
+  records.all_read();
   return std::make_shared<const world::snapshot>(where, delta.tick,
                                                  std::chrono::duration<double>{delta.time_s},
                                                  std::move(people), std::move(delta.events));
@@ -197,20 +214,8 @@ subset_delta subset_between(const world::snapshot& before, std::span<const world
       throw std::invalid_argument(
           fmt::format("pedestrian {} is not in the snapshot of tick {}, or out of id order", p.id,
                       before.tick()));
-    const auto& q = old[j];
-    auto& change = d.changes[j++];
-    if (!same_slow(p, q)) {
-      change = static_cast<std::uint8_t>(pedestrian_change::changed);
-      d.whole.push_back(p);
-      continue;
-    }
-    auto m = moved_of(p);
-    if (m == moved_of(q)) {
-      change = static_cast<std::uint8_t>(pedestrian_change::kept);
-      continue;
-    }
-    change = static_cast<std::uint8_t>(pedestrian_change::moved);
-    d.moved.push_back(m);
+    d.changes[j] = static_cast<std::uint8_t>(change_of(p, old[j], d.moved, d.whole));
+    ++j;
   }
   return d;
 }
@@ -224,33 +229,11 @@ std::vector<pedestrian_state> apply_subset(const world::snapshot& before, subset
                     delta.changes.size(), before.tick(), old.size()));
   std::vector<pedestrian_state> out;
   out.reserve(delta.moved.size() + delta.whole.size());
-  std::size_t next_moved = 0;
-  std::size_t next_whole = 0;
-  for (std::size_t j = 0; j < old.size(); ++j) {
-    const auto c = delta.changes[j];
-    if (c == subset_delta::absent) continue;
-    switch (static_cast<pedestrian_change>(c)) {
-      case pedestrian_change::kept:
-        out.push_back(old[j]);
-        break;
-      case pedestrian_change::moved:
-        if (next_moved == delta.moved.size()) out_of_step("fewer moves than moved pedestrians");
-        out.push_back(old[j]);
-        move(out.back(), delta.moved[next_moved++]);
-        break;
-      case pedestrian_change::changed:
-        if (next_whole == delta.whole.size()) out_of_step("fewer whole pedestrians than changes");
-        if (delta.whole[next_whole].id != old[j].id)
-          out_of_step(fmt::format("pedestrian {} changed in the place of {}",
-                                  delta.whole[next_whole].id, old[j].id));
-        out.push_back(std::move(delta.whole[next_whole++]));
-        break;
-      default:
-        out_of_step(fmt::format("unknown change {}", static_cast<int>(c)));
-    }
-  }
-  if (next_moved != delta.moved.size() || next_whole != delta.whole.size())
-    out_of_step("records left over");
+  record_reader records(delta.moved, delta.whole);
+  for (std::size_t j = 0; j < old.size(); ++j)
+    if (delta.changes[j] != subset_delta::absent)
+      out.push_back(records.after(static_cast<pedestrian_change>(delta.changes[j]), old[j]));
+  records.all_read();
   return out;
 }
 
