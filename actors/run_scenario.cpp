@@ -157,8 +157,11 @@ run_outcome run_scenario(const config::scenario& scenario, const run_options& op
   const auto end_tick = config::to_ticks(scenario.run.duration, scenario.run.tick);
   caf::actor video_participant;
   world_run_settings world_settings;
-  world_settings.station =
-      options.station ? options.station : world::station::load(world::layout_path(scenario));
+  world::navigation_settings navigation;
+  navigation.threads = static_cast<unsigned>(threads);
+  world_settings.station = options.station
+                               ? options.station
+                               : world::station::load(world::layout_path(scenario), navigation);
   // Kept for the evaluation: world_settings goes to the world actors.
   const auto station = world_settings.station;
   render_pool pool;

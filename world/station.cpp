@@ -3,10 +3,15 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
+#include <atomic>
+#include <bit>
 #include <cmath>
+#include <cstdint>
+#include <exception>
 #include <limits>
-#include <queue>
 #include <stdexcept>
+#include <thread>
 
 #include "world/layout_loader.hpp"
 
@@ -15,6 +20,50 @@ namespace argus::world {
 namespace {
 
 constexpr float unreachable = std::numeric_limits<float>::infinity();
+
+/// Dijkstra's open list: cells by distance, for distances that never fall below the last one
+/// taken (a radix heap, Ahuja et al. 1990, on the bits of non-negative floats, which order as
+/// their values do). A push is an append; a pop sorts only the bucket it empties. Which of two
+/// equally distant cells comes out first does not matter: a cell's distance is the least over
+/// its neighbours of theirs plus the step, whatever order they were settled in.
+class open_cells {
+ public:
+  bool empty() const noexcept { return size_ == 0; }
+
+  void push(float distance, int cell) {
+    const auto key = std::bit_cast<std::uint32_t>(distance);
+    buckets_[bucket_of(key)].push_back({key, cell});
+    ++size_;
+  }
+
+  /// A cell of least distance, and that distance; the list must not be empty.
+  std::pair<float, int> pop() {
+    if (buckets_[0].empty()) {
+      std::size_t b = 1;
+      while (buckets_[b].empty()) ++b;
+      auto& from = buckets_[b];
+      last_ = std::min_element(from.begin(), from.end())->first;
+      // Everything in the bucket now lies nearer the new least key: each goes to a lower one.
+      for (const auto& e : from) buckets_[bucket_of(e.first)].push_back(e);
+      from.clear();
+    }
+    const auto [key, cell] = buckets_[0].back();
+    buckets_[0].pop_back();
+    --size_;
+    return {std::bit_cast<float>(key), cell};
+  }
+
+ private:
+  // Bucket 0 holds keys equal to the last taken; bucket b, those whose highest bit that
+  // differs from it is bit b - 1.
+  std::size_t bucket_of(std::uint32_t key) const {
+    return key == last_ ? 0 : 32 - static_cast<std::size_t>(std::countl_zero(key ^ last_));
+  }
+
+  std::array<std::vector<std::pair<std::uint32_t, int>>, 33> buckets_;
+  std::uint32_t last_ = 0;
+  std::size_t size_ = 0;
+};
 
 /// Even-odd point-in-polygon test.
 bool inside_polygon(const std::vector<vec2>& polygon, const vec2& p) {
@@ -234,42 +283,69 @@ void station::build_grid() {
   }
 }
 
+std::vector<std::vector<float>> station::distance_fields(
+    const std::vector<std::vector<int>>& sources) const {
+  std::vector<std::vector<float>> fields(sources.size());
+  // Each field is a Dijkstra of its own over the same read-only grid: they are computed side
+  // by side, and each comes out the same whichever thread computes it. A large station's
+  // 164 fields were nearly all of its loading time on one core.
+  const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
+  const auto threads = static_cast<unsigned>(
+      std::min<std::size_t>(settings_.threads != 0 ? settings_.threads : hardware, sources.size()));
+  std::atomic<std::size_t> next{0};
+  std::vector<std::exception_ptr> failed(sources.size());
+  auto work = [&] {
+    for (std::size_t i = next++; i < sources.size(); i = next++) {
+      try {
+        fields[i] = sources[i].empty() ? std::vector<float>(blocked_.size(), unreachable)
+                                       : dijkstra(sources[i]);
+      } catch (...) {
+        failed[i] = std::current_exception();
+      }
+    }
+  };
+  {
+    std::vector<std::jthread> helpers;
+    for (unsigned t = 1; t < threads; ++t) helpers.emplace_back(work);
+    work();
+  }
+  for (const auto& e : failed)
+    if (e) std::rethrow_exception(e);
+  return fields;
+}
+
 std::vector<float> station::dijkstra(const std::vector<int>& sources) const {
   std::vector<float> distance(blocked_.size(), unreachable);
-  using entry = std::pair<float, int>;
-  std::priority_queue<entry, std::vector<entry>, std::greater<>> open;
+  open_cells open;
   for (const int s : sources) {
     distance[s] = 0.0f;
-    open.push({0.0f, s});
+    open.push(0.0f, s);
   }
   const float cell = static_cast<float>(settings_.cell_m);
   const float diagonal = cell * std::sqrt(2.0f);
   while (!open.empty()) {
-    const auto [d, c] = open.top();
-    open.pop();
+    const auto [d, c] = open.pop();
     if (d > distance[c]) continue;
     const int cx = c % grid_w_;
     const int cy = c / grid_w_;
     for (int direction = 0; direction < 8; ++direction) {
-      {
-        const int dx = step_x[direction];
-        const int dy = step_y[direction];
-        const int nx = cx + dx;
-        const int ny = cy + dy;
-        if (nx < 0 || ny < 0 || nx >= grid_w_ || ny >= grid_h_) continue;
-        const int n = ny * grid_w_ + nx;
-        if (blocked_[n] || (edge_blocked_[c] & (1u << direction))) continue;
-        // No corner cutting: a diagonal step needs both side cells free.
-        if (dx != 0 && dy != 0 && (blocked_[cy * grid_w_ + nx] || blocked_[ny * grid_w_ + cx])) {
-          continue;
-        }
-        // Mean cost of the two cells the step joins.
-        const float step =
-            (dx != 0 && dy != 0 ? diagonal : cell) * 0.5f * (wall_cost_[c] + wall_cost_[n]);
-        if (d + step < distance[n]) {
-          distance[n] = d + step;
-          open.push({distance[n], n});
-        }
+      const int dx = step_x[direction];
+      const int dy = step_y[direction];
+      const int nx = cx + dx;
+      const int ny = cy + dy;
+      if (nx < 0 || ny < 0 || nx >= grid_w_ || ny >= grid_h_) continue;
+      const int n = ny * grid_w_ + nx;
+      if (blocked_[n] || (edge_blocked_[c] & (1u << direction))) continue;
+      // No corner cutting: a diagonal step needs both side cells free.
+      if (dx != 0 && dy != 0 && (blocked_[cy * grid_w_ + nx] || blocked_[ny * grid_w_ + cx])) {
+        continue;
+      }
+      // Mean cost of the two cells the step joins.
+      const float step =
+          (dx != 0 && dy != 0 ? diagonal : cell) * 0.5f * (wall_cost_[c] + wall_cost_[n]);
+      if (d + step < distance[n]) {
+        distance[n] = d + step;
+        open.push(distance[n], n);
       }
     }
   }
@@ -384,15 +460,17 @@ void station::build_fields() {
     entrances.push_back(static_cast<std::size_t>(field_base_[1]) + i);
   }
   const auto free_cells = std::count(blocked_.begin(), blocked_.end(), std::uint8_t{0});
+  std::vector<std::vector<int>> sources;
+  sources.reserve(targets.size());
+  for (const auto& target : targets) sources.push_back(target.cells);
+  fields_ = distance_fields(sources);
   for (const auto& target : targets) {
+    const auto& field = fields_[static_cast<std::size_t>(&target - targets.data())];
     if (target.cells.empty()) {
       report(target.element,
              fmt::format("'{}' lies on no walkable floor (navigation grid)", target.name));
-      fields_.emplace_back(blocked_.size(), unreachable);
       continue;
     }
-    fields_.push_back(dijkstra(target.cells));
-    const auto& field = fields_.back();
     bool cut_off = false;
     for (const auto e : entrances) {
       const auto& from = targets[e];

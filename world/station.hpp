@@ -45,6 +45,9 @@ struct navigation_settings {
   /// distributed run's workers do (docs/distributed.md): then no walker may use it, and
   /// target(), distance_to() and direction_to() must not be called.
   bool fields = true;
+  /// Threads that compute the distance fields side by side (0: one per core). The fields are
+  /// the same for any count.
+  unsigned threads = 0;
 };
 
 /// The immutable station: its layout plus everything derived from it once, shared by every
@@ -157,6 +160,10 @@ class station {
   void build_fields();
   void check_lines(std::vector<config::problem>& problems) const;
   void check_portals(std::vector<config::problem>& problems) const;
+  /// One field per entry of `sources` (an empty one: unreachable everywhere), computed on
+  /// navigation_settings::threads threads.
+  std::vector<std::vector<float>> distance_fields(
+      const std::vector<std::vector<int>>& sources) const;
   std::vector<float> dijkstra(const std::vector<int>& sources) const;
   // The lower-left of the four cells whose centres surround `p`: where direction_to's
   // bilinear stencil starts (and what prefetch_route fetches around).

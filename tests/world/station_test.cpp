@@ -149,6 +149,39 @@ TEST(station, the_shipped_layout_passes_every_check) {
                   .empty());
 }
 
+TEST(station, the_fields_are_the_same_whatever_the_threads_that_compute_them) {
+  // The fields are computed side by side: each must land in its own target's place, whole.
+  navigation_settings one_thread;
+  one_thread.threads = 1;
+  navigation_settings three_threads;
+  three_threads.threads = 3;
+  const auto alone = station::load(builtin_layout_path(), one_thread);
+  const auto shared = station::load(builtin_layout_path(), three_threads);
+  const auto& plan = alone->plan();
+  const std::vector<std::pair<target_kind, std::size_t>> kinds{
+      {target_kind::portal, plan.portals.size()},
+      {target_kind::stairs, plan.stairways.size()},
+      {target_kind::counter, alone->counter_count()},
+      {target_kind::bench, plan.benches.size()},
+      {target_kind::meeting_point, plan.meeting_points.size()}};
+  int compared = 0;
+  for (const auto& [kind, count] : kinds) {
+    for (std::size_t i = 0; i < count; ++i) {
+      const int field = alone->target(kind, i);
+      ASSERT_EQ(field, shared->target(kind, i));
+      for (double x = 0.25; x < plan.size_m.x(); x += 1.3) {
+        for (double y = 0.25; y < plan.size_m.y(); y += 1.3) {
+          const vec2 p{x, y};
+          ASSERT_EQ(alone->distance_to(field, p), shared->distance_to(field, p))
+              << "field " << field << " at " << p.transpose();
+          ++compared;
+        }
+      }
+    }
+  }
+  EXPECT_GT(compared, 100000);
+}
+
 TEST(station, stairs_behind_a_wall_are_unreachable_from_the_entrance) {
   auto plan = small_hall();
   // A wall right across the hall at x = 15 shuts the stairs in the east end away.
