@@ -110,6 +110,7 @@ struct hosted_run {
 struct worker_host_state {
   std::string name;
   std::size_t render_threads = 1;
+  unsigned field_threads = 0;
   std::optional<hosted_run> run;
 };
 
@@ -144,6 +145,7 @@ caf::result<std::vector<caf::actor>> set_up(host_actor* self, worker_setup& setu
     // checked the layout).
     world::navigation_settings looked_at;
     looked_at.fields = setup.steps_crowd;
+    looked_at.threads = st.field_threads;
     auto station =
         world::station::load(run.files->write("layout.yaml", setup.layout_text), looked_at);
     vision::sensor_model model;
@@ -274,9 +276,11 @@ void on_down(host_actor* self, const caf::down_msg& msg) {
   answer_batch(self);
 }
 
-caf::behavior worker_host(host_actor* self, std::string name, std::size_t render_threads) {
+caf::behavior worker_host(host_actor* self, std::string name, std::size_t render_threads,
+                          unsigned field_threads) {
   self->state.name = std::move(name);
   self->state.render_threads = render_threads;
+  self->state.field_threads = field_threads;
   self->set_down_handler([self](caf::down_msg& msg) { on_down(self, msg); });
   // A host that is ended takes what it hosts with it, for the same reason: a coordinator sees
   // the cameras and links of a host that goes as it sees those of a worker that goes.
@@ -353,8 +357,8 @@ caf::behavior worker_host(host_actor* self, std::string name, std::size_t render
 }  // namespace
 
 caf::actor spawn_worker_host(caf::actor_system& system, std::string name,
-                             std::size_t render_threads) {
-  return system.spawn(worker_host, std::move(name), render_threads);
+                             std::size_t render_threads, unsigned field_threads) {
+  return system.spawn(worker_host, std::move(name), render_threads, field_threads);
 }
 
 }  // namespace argus::actors

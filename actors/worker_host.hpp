@@ -13,7 +13,8 @@ const char* argus_version();
 
 /// Spawns the actor that hosts a worker's part of a distributed run (docs/distributed.md);
 /// `argus worker` publishes it, tests spawn it in-process. `name` is how it introduces itself;
-/// `render_threads` the renderers it makes for pixel sensing.
+/// `render_threads` the renderers it makes for pixel sensing; `field_threads` the threads that
+/// compute the station's distance fields when it steps crowd partitions (0: one per core).
 ///
 /// Ended (an exit message), it ends the cameras and links it hosts with the same reason, so a
 /// host ended with `remote_link_unreachable` in one process looks to the coordinator like a
@@ -42,6 +43,6 @@ const char* argus_version();
 /// - `(take_log_atom)` -> `eval::observation_log::contents`: what its cameras recorded;
 /// - `(release_atom)` -> `done_atom`: ends what it hosted and waits for the next run.
 caf::actor spawn_worker_host(caf::actor_system& system, std::string name,
-                             std::size_t render_threads);
+                             std::size_t render_threads, unsigned field_threads = 0);
 
 }  // namespace argus::actors

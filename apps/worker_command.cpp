@@ -38,7 +38,9 @@ void add_worker_command(CLI::App& app, int& result) {
   cmd->add_option("--listen", args->listen,
                   "HOST:PORT to listen on (default 127.0.0.1:7001; port 0: any free one; beyond "
                   "loopback only with TLS)");
-  cmd->add_option("--threads", args->threads, "Scheduler threads (default: one per core)");
+  cmd->add_option("--threads", args->threads,
+                  "Scheduler threads, and those that compute the distance fields (default: one "
+                  "per core)");
   cmd->add_option("--render-threads", args->render_threads,
                   "Renderers for pixel sensing (default: as many as scheduler threads)");
   add_tls_options(cmd, args->tls, "worker", "coordinator");

@@ -28,9 +28,9 @@ void serve_worker(const worker_options& options, const std::function<void(unsign
   actors::system_config cfg(threads);
   load_network_layer(cfg, options.tls);
   caf::actor_system system{cfg};
-  auto host =
-      actors::spawn_worker_host(system, options.listen.to_string(),
-                                options.render_threads != 0 ? options.render_threads : threads);
+  auto host = actors::spawn_worker_host(
+      system, options.listen.to_string(),
+      options.render_threads != 0 ? options.render_threads : threads, threads);
   const char* where = options.listen.host.c_str();
   auto port = options.tls.given()
                   ? caf::openssl::publish(host, options.listen.port, where, /*reuse=*/true)
