@@ -12,10 +12,10 @@ namespace argus::world {
 
 /// Dijkstra's open list (station's distance fields): cells by distance, for distances that
 /// never fall below the last one taken (a radix heap, Ahuja et al. 1990, on the bits of
-/// non-negative floats, which order as their values do). A push is an append; a pop sorts only the
-/// bucket it empties. Which of two equally distant cells comes out first does not matter: a cell's
-/// distance is the least over its neighbours of theirs plus the step, whatever order they were
-/// settled in.
+/// non-negative floats, which order as their values do). A push is an append; a pop that finds
+/// bucket 0 empty moves only the lowest non-empty bucket down. Which of two equally distant
+/// cells comes out first does not matter: a cell's distance is the least over its neighbours of
+/// theirs plus the step, whatever order they were settled in.
 class open_cells {
  public:
   bool empty() const noexcept { return size_ == 0; }

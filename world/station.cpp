@@ -419,8 +419,9 @@ void station::build_fields() {
   sources.reserve(targets.size());
   for (const auto& target : targets) sources.push_back(target.cells);
   fields_ = distance_fields(sources);
-  for (const auto& target : targets) {
-    const auto& field = fields_[static_cast<std::size_t>(&target - targets.data())];
+  for (std::size_t t = 0; t < targets.size(); ++t) {
+    const auto& target = targets[t];
+    const auto& field = fields_[t];
     if (target.cells.empty()) {
       report(target.element,
              fmt::format("'{}' lies on no walkable floor (navigation grid)", target.name));
