@@ -1,5 +1,6 @@
 #pragma once
 
+#include <atomic>
 #include <cstddef>
 #include <mutex>
 #include <thread>
@@ -28,14 +29,30 @@ namespace argus::actors {
 /// Its workers also leave CAF's logger: see `dequeue`.
 class turn_order_scheduling : public caf::policy::work_stealing {
  public:
+  /// Counts the workers asleep (see `dequeue`), so that a busy worker can hand one a job.
+  struct coordinator_data : caf::policy::work_stealing::coordinator_data {
+    using caf::policy::work_stealing::coordinator_data::coordinator_data;
+    std::atomic<std::size_t> asleep{0};
+  };
+
+  /// A job made ready on a worker that has others queued goes to a worker asleep, if there is
+  /// one, waking it; otherwise to the back of this worker's queue. One job at a time stays
+  /// here: a chain of mail runs on one thread, without a wake-up on the way.
   template <class Worker>
   void internal_enqueue(Worker* self, caf::resumable* job) {
-    d(self).queue.append(job);
+    auto& data = d(self);
+    if (!data.queue.empty() && d(self->parent()).asleep.load(std::memory_order_relaxed) > 0)
+      if (auto* sleeper = find_asleep(self)) {
+        sleeper->external_enqueue(job);
+        return;
+      }
+    data.queue.append(job);
   }
 
   /// The next job for `self`: its own queue first, then other workers' queues, polling hard,
-  /// then gently, then asleep until a job is enqueued from outside or a relaxed interval passes
-  /// (CAF's three strategies, read from the same configuration).
+  /// then gently (`system_config` turns this off), then asleep until a job is enqueued from
+  /// outside or handed over (`internal_enqueue`), or a relaxed interval passes (CAF's three
+  /// strategies, read from the same configuration).
   ///
   /// Each worker thread first leaves CAF's logger. Debian's CAF is built with the logger in,
   /// and for every job it runs, a worker (and the actor) records the actor's id in the
@@ -60,13 +77,16 @@ class turn_order_scheduling : public caf::policy::work_stealing {
       }
     }
     const auto& relaxed = data.strategies[2];
+    auto& asleep = d(self->parent()).asleep;
     for (std::size_t i = 1;; ++i) {
       bool woken = false;
       {
         std::unique_lock<std::mutex> guard(data.waitdata.lock);
         data.waitdata.sleeping = true;
+        asleep.fetch_add(1, std::memory_order_relaxed);
         woken = data.waitdata.cv.wait_for(guard, relaxed.sleep_duration,
                                           [&] { return !data.queue.empty(); });
+        asleep.fetch_sub(1, std::memory_order_relaxed);
         data.waitdata.sleeping = false;
       }
       if (woken) {
@@ -78,6 +98,20 @@ class turn_order_scheduling : public caf::policy::work_stealing {
   }
 
  private:
+  // Another worker asleep on its queue, if one is: the first after `self` in id order.
+  template <class Worker>
+  static Worker* find_asleep(Worker* self) {
+    auto parent = self->parent();
+    const auto n = parent->num_workers();
+    for (std::size_t k = 1; k < n; ++k) {
+      auto* other = parent->worker_by_id((self->id() + k) % n);
+      auto& wait = d(other).waitdata;
+      std::lock_guard<std::mutex> guard(wait.lock);
+      if (wait.sleeping) return other;
+    }
+    return nullptr;
+  }
+
   // The oldest job of a random other worker, if it has one.
   template <class Worker>
   caf::resumable* steal(Worker* self) {
