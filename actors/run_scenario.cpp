@@ -34,6 +34,8 @@
 #include "live/command_log.hpp"
 #include "nlohmann/json.hpp"
 #include "protocol/topology.hpp"
+#include "spdlog/spdlog.h"
+#include "world/field_cache.hpp"
 #include "world/layout_loader.hpp"
 
 namespace argus::actors {
@@ -159,9 +161,12 @@ run_outcome run_scenario(const config::scenario& scenario, const run_options& op
   world_run_settings world_settings;
   world::navigation_settings navigation;
   navigation.threads = static_cast<unsigned>(threads);
+  navigation.field_cache = world::field_cache::default_dir().value_or(std::filesystem::path{});
   world_settings.station = options.station
                                ? options.station
                                : world::station::load(world::layout_path(scenario), navigation);
+  if (const auto& problem = world_settings.station->field_cache_problem(); !problem.empty())
+    spdlog::warn("the distance fields were computed but not kept for the next run: {}", problem);
   // Kept for the evaluation: world_settings goes to the world actors.
   const auto station = world_settings.station;
   render_pool pool;

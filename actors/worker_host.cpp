@@ -24,6 +24,7 @@
 #include "fmt/format.h"
 #include "spdlog/spdlog.h"
 #include "world/crowd.hpp"
+#include "world/field_cache.hpp"
 
 namespace argus::actors {
 
@@ -146,8 +147,16 @@ caf::result<std::vector<caf::actor>> set_up(host_actor* self, worker_setup& setu
     world::navigation_settings looked_at;
     looked_at.fields = setup.steps_crowd;
     looked_at.threads = st.field_threads;
+    // The coordinator has just stored the fields in this machine's cache, if it shares it.
+    looked_at.field_cache = world::field_cache::default_dir().value_or(std::filesystem::path{});
     auto station =
         world::station::load(run.files->write("layout.yaml", setup.layout_text), looked_at);
+    if (setup.steps_crowd)
+      spdlog::info("worker {}: distance fields {}", st.name,
+                   station->fields_from_cache() ? "read from the field cache" : "computed");
+    if (const auto& problem = station->field_cache_problem(); !problem.empty())
+      spdlog::warn("worker {}: the distance fields were not kept for the next run: {}", st.name,
+                   problem);
     vision::sensor_model model;
     if (!setup.sensor_model_text.empty())
       model = vision::load_sensor_model(

@@ -8,6 +8,10 @@
 # RUN OPTIONS go to the distributed runs, e.g. `--set placement.crowd=coordinator`.
 # Then the per-tick cost of the cross-process barrier: minimal.yaml (emulated, three cameras,
 # nearly nothing to compute) in one process and with one worker, 1,800 ticks.
+# Every process shares one field cache (docs/world.md, "The field cache"). FIELD_CACHE=cold (the
+# default) empties it before each run, so each run computes its station's fields once (in its
+# coordinator; its workers read them); FIELD_CACHE=warm keeps it, as on a machine that has run
+# the station before.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 argus="${1:-$root/build/apps/argus}"
@@ -15,6 +19,9 @@ rounds="${2:-3}"
 shift $(($# < 2 ? $# : 2))
 distributed_options=("$@")
 out="$(mktemp -d)"
+cache_state="${FIELD_CACHE:-cold}"
+case "$cache_state" in cold | warm) ;; *) echo "FIELD_CACHE: expected cold or warm, got '$cache_state'" >&2; exit 2 ;; esac
+export ARGUS_FIELD_CACHE="$out/fields"
 pids=()
 trap 'for p in "${pids[@]}"; do kill "$p" 2>/dev/null; done; rm -rf "$out"' EXIT
 
@@ -31,6 +38,7 @@ four="${workers[0]},${workers[1]},${workers[2]},${workers[3]}"
 timed() {  # timed FILE COMMAND...: appends the wall seconds of COMMAND to FILE
   local file=$1 start end
   shift
+  [ "$cache_state" = cold ] && rm -rf "$ARGUS_FIELD_CACHE"
   start=$(date +%s.%N)
   "$@" >/dev/null 2>"$out/last.err" || { cat "$out/last.err" >&2; exit 1; }
   end=$(date +%s.%N)
@@ -53,12 +61,12 @@ compare() {  # compare NAME LABEL SCENARIO DURATION [run options]
         { echo "$name: $n workers wrote another events.jsonl" >&2; exit 1; }
     done
   done
-  python3 - "$label" "$duration" "$out/$name-1" "$out/$name-2" "$out/$name-4" <<'PY'
+  python3 - "$label" "$duration" "$out/$name-1" "$out/$name-2" "$out/$name-4" "$cache_state" <<'PY'
 import statistics, sys
 name, duration = sys.argv[1], sys.argv[2]
 one, two, four = ([float(x) for x in open(f)] for f in sys.argv[3:6])
 med = statistics.median
-print(f"{name} ({duration}): one process {med(one):.2f} s; "
+print(f"{name} ({duration}, field cache {sys.argv[6]}): one process {med(one):.2f} s; "
       f"2 workers {med(two):.2f} s ({med(b / a for a, b in zip(one, two)):.2f}x); "
       f"4 workers {med(four):.2f} s ({med(b / a for a, b in zip(one, four)):.2f}x); "
       f"{len(one)} rounds, ratios paired by round")

@@ -14,6 +14,7 @@
 #include "report/plan_report.hpp"
 #include "report/target_paths.hpp"
 #include "report/timeline_report.hpp"
+#include "world/field_cache.hpp"
 #include "world/layout_loader.hpp"
 #include "world/station.hpp"
 
@@ -71,7 +72,11 @@ class report_builder {
       given = &*loaded_;
     }
     try {
-      station_ = world::station::load(world::layout_path(*given));
+      // The feeds' key frames walk the crowd again, so the fields are needed: after a run they
+      // are in the field cache it has just filled, and read back instead of computed again.
+      world::navigation_settings settings;
+      settings.field_cache = world::field_cache::default_dir().value_or(std::filesystem::path{});
+      station_ = world::station::load(world::layout_path(*given), settings);
     } catch (const std::exception& e) {
       leave_out(fmt::format("station layout: {}", e.what()));
       return;

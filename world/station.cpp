@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "world/field_cache.hpp"
 #include "world/layout_loader.hpp"
 #include "world/open_cells.hpp"
 
@@ -269,6 +270,34 @@ std::vector<std::vector<float>> station::distance_fields(
   return fields;
 }
 
+std::vector<std::vector<float>> station::cached_or_computed_fields(
+    const std::vector<std::vector<int>>& sources) {
+  if (settings_.field_cache.empty()) return distance_fields(sources);
+  // Everything the fields are computed from; the cell size gives the step costs.
+  field_key key;
+  key.add_value(field_cache::version);
+  key.add_value(grid_w_);
+  key.add_value(grid_h_);
+  key.add_value(settings_.cell_m);
+  key.add_values(std::span<const std::uint8_t>(blocked_));
+  key.add_values(std::span<const std::uint8_t>(edge_blocked_));
+  key.add_values(std::span<const float>(wall_cost_));
+  key.add_value(sources.size());
+  for (const auto& cells : sources) {
+    key.add_value(cells.size());
+    key.add_values(std::span<const int>(cells));
+  }
+  const auto hex = key.hex();
+  const field_cache cache(settings_.field_cache);
+  if (auto kept = cache.load(hex, sources.size(), blocked_.size())) {
+    fields_from_cache_ = true;
+    return std::move(*kept);
+  }
+  auto fields = distance_fields(sources);
+  field_cache_problem_ = cache.store(hex, fields);
+  return fields;
+}
+
 std::vector<float> station::dijkstra(const std::vector<int>& sources) const {
   std::vector<float> distance(blocked_.size(), unreachable);
   open_cells open;
@@ -418,7 +447,7 @@ void station::build_fields() {
   std::vector<std::vector<int>> sources;
   sources.reserve(targets.size());
   for (const auto& target : targets) sources.push_back(target.cells);
-  fields_ = distance_fields(sources);
+  fields_ = cached_or_computed_fields(sources);
   for (std::size_t t = 0; t < targets.size(); ++t) {
     const auto& target = targets[t];
     const auto& field = fields_[t];

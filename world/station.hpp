@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <memory>
 #include <span>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -48,6 +49,9 @@ struct navigation_settings {
   /// Threads that compute the distance fields side by side (0: one per core). The fields are
   /// the same for any count.
   unsigned threads = 0;
+  /// Where the fields are kept between processes (world/field_cache.hpp); empty: nowhere, they
+  /// are computed. Runs use field_cache::default_dir(). The fields are the same either way.
+  std::filesystem::path field_cache;
 };
 
 /// The immutable station: its layout plus everything derived from it once, shared by every
@@ -143,6 +147,11 @@ class station {
     return r != nullptr ? r->speed_factor : 1.0;
   }
 
+  /// Whether the distance fields were read from navigation_settings::field_cache rather than
+  /// computed, and what went wrong storing them there (empty: nothing), for the run's log.
+  bool fields_from_cache() const noexcept { return fields_from_cache_; }
+  const std::string& field_cache_problem() const noexcept { return field_cache_problem_; }
+
   /// Navigation grid geometry (for drawing and tests).
   int grid_width() const noexcept { return grid_w_; }
   int grid_height() const noexcept { return grid_h_; }
@@ -164,6 +173,9 @@ class station {
   /// navigation_settings::threads threads.
   std::vector<std::vector<float>> distance_fields(
       const std::vector<std::vector<int>>& sources) const;
+  /// distance_fields, read from the field cache when it holds them, and stored there when not.
+  std::vector<std::vector<float>> cached_or_computed_fields(
+      const std::vector<std::vector<int>>& sources);
   std::vector<float> dijkstra(const std::vector<int>& sources) const;
   // The lower-left of the four cells whose centres surround `p`: where direction_to's
   // bilinear stencil starts (and what prefetch_route fetches around).
@@ -191,6 +203,8 @@ class station {
   std::vector<std::uint8_t> edge_blocked_;
   std::vector<std::vector<float>> fields_;
   std::vector<int> field_base_;  // first field of each target_kind
+  bool fields_from_cache_ = false;
+  std::string field_cache_problem_;
   bool has_speed_factors_ = false;
 };
 

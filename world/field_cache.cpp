@@ -1,0 +1,225 @@
+#include "world/field_cache.hpp"
+
+#include <openssl/evp.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <chrono>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <stdexcept>
+#include <system_error>
+#include <thread>
+#include <tuple>
+
+#include "fmt/format.h"
+
+namespace argus::world {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr std::array<char, 8> magic{'A', 'R', 'G', 'U', 'S', 'F', 'L', 'D'};
+constexpr std::size_t key_chars = 64;
+constexpr const char* extension = ".fields";
+
+// What a file starts with; the fields follow, one after another, as the machine's floats.
+struct file_header {
+  std::array<char, 8> magic{};
+  std::uint32_t version = 0;
+  std::uint32_t reserved = 0;
+  std::uint64_t fields = 0;
+  std::uint64_t cells = 0;
+  std::array<char, key_chars> key{};
+  std::array<unsigned char, 32> checksum{};
+};
+static_assert(sizeof(file_header) == 8 + 4 + 4 + 8 + 8 + key_chars + 32);
+
+EVP_MD_CTX* new_sha256() {
+  EVP_MD_CTX* context = EVP_MD_CTX_new();
+  if (context == nullptr || EVP_DigestInit_ex(context, EVP_sha256(), nullptr) != 1) {
+    EVP_MD_CTX_free(context);
+    throw std::runtime_error("OpenSSL cannot make a SHA-256 context");
+  }
+  return context;
+}
+
+std::array<unsigned char, 32> finish(EVP_MD_CTX* context) {
+  std::array<unsigned char, 32> digest{};
+  unsigned length = 0;
+  EVP_DigestFinal_ex(context, digest.data(), &length);
+  EVP_MD_CTX_free(context);
+  return digest;
+}
+
+// A checksum of the fields as they lie in the file.
+std::array<unsigned char, 32> checksum_of(const std::vector<std::vector<float>>& fields) {
+  EVP_MD_CTX* context = new_sha256();
+  for (const auto& f : fields) EVP_DigestUpdate(context, f.data(), f.size() * sizeof(float));
+  return finish(context);
+}
+
+bool key_fits(const std::string& key) {
+  return key.size() == key_chars &&
+         std::all_of(key.begin(), key.end(), [](char c) { return std::isxdigit(c) != 0; });
+}
+
+}  // namespace
+
+field_cache::field_cache(std::filesystem::path dir, std::uint64_t max_bytes)
+    : dir_(std::move(dir)), max_bytes_(max_bytes) {}
+
+std::optional<std::filesystem::path> field_cache::default_dir() {
+  if (const char* chosen = std::getenv("ARGUS_FIELD_CACHE"); chosen != nullptr && *chosen != 0) {
+    if (std::string(chosen) == "off") return std::nullopt;
+    return fs::path(chosen);
+  }
+  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg != nullptr && *xdg == '/')
+    return fs::path(xdg) / "argus" / "fields";
+  if (const char* home = std::getenv("HOME"); home != nullptr && *home != 0)
+    return fs::path(home) / ".cache" / "argus" / "fields";
+  return std::nullopt;
+}
+
+std::filesystem::path field_cache::file_of(const std::string& key) const {
+  return dir_ / (key + extension);
+}
+
+std::optional<std::vector<std::vector<float>>> field_cache::load(const std::string& key,
+                                                                 std::size_t fields,
+                                                                 std::size_t cells) const {
+  if (!key_fits(key)) return std::nullopt;
+  const auto file = file_of(key);
+  std::ifstream in(file, std::ios::binary);
+  if (!in) return std::nullopt;
+  file_header header;
+  in.read(reinterpret_cast<char*>(&header), sizeof header);
+  if (in.gcount() != sizeof header || header.magic != magic || header.version != version ||
+      header.fields != fields || header.cells != cells ||
+      std::memcmp(header.key.data(), key.data(), key_chars) != 0)
+    return std::nullopt;
+  std::vector<std::vector<float>> out(fields);
+  EVP_MD_CTX* context = new_sha256();
+  const auto bytes = static_cast<std::streamsize>(cells * sizeof(float));
+  for (auto& f : out) {
+    f.resize(cells);
+    in.read(reinterpret_cast<char*>(f.data()), bytes);
+    if (in.gcount() != bytes) {
+      EVP_MD_CTX_free(context);
+      return std::nullopt;
+    }
+    EVP_DigestUpdate(context, f.data(), static_cast<std::size_t>(bytes));
+  }
+  const bool whole = in.peek() == std::ifstream::traits_type::eof();
+  if (finish(context) != header.checksum || !whole) return std::nullopt;
+  // Marked as used, for trim(); a cache on a read-only disk still serves.
+  std::error_code ignored;
+  fs::last_write_time(file, fs::file_time_type::clock::now(), ignored);
+  return out;
+}
+
+std::string field_cache::store(const std::string& key,
+                               const std::vector<std::vector<float>>& fields) const {
+  if (!key_fits(key)) return fmt::format("'{}' is not a field cache key", key);
+  std::error_code error;
+  fs::create_directories(dir_, error);
+  if (error) return fmt::format("cannot make {}: {}", dir_.string(), error.message());
+  file_header header;
+  header.magic = magic;
+  header.version = version;
+  header.fields = fields.size();
+  header.cells = fields.empty() ? 0 : fields.front().size();
+  for (const auto& f : fields)
+    if (f.size() != header.cells) return "fields of different sizes cannot be stored";
+  std::copy(key.begin(), key.end(), header.key.begin());
+  header.checksum = checksum_of(fields);
+  // Aside first, under a name no other process or thread uses, then renamed into place.
+  const auto stamp = std::chrono::steady_clock::now().time_since_epoch().count();
+  const auto aside =
+      dir_ / fmt::format("{}.tmp.{}.{}.{}", key, ::getpid(),
+                         std::hash<std::thread::id>{}(std::this_thread::get_id()), stamp);
+  {
+    std::ofstream out(aside, std::ios::binary | std::ios::trunc);
+    out.write(reinterpret_cast<const char*>(&header), sizeof header);
+    for (const auto& f : fields)
+      out.write(reinterpret_cast<const char*>(f.data()),
+                static_cast<std::streamsize>(f.size() * sizeof(float)));
+    out.flush();
+    if (!out) {
+      fs::remove(aside, error);
+      return fmt::format("cannot write {} (is the disk full?)", aside.string());
+    }
+  }
+  const auto file = file_of(key);
+  fs::rename(aside, file, error);
+  if (error) {
+    const auto message =
+        fmt::format("cannot rename {} to {}: {}", aside.string(), file.string(), error.message());
+    fs::remove(aside, error);
+    return message;
+  }
+  trim(file);
+  return {};
+}
+
+void field_cache::trim(const std::filesystem::path& keep) const {
+  struct entry {
+    fs::file_time_type used;
+    std::uint64_t bytes;
+    fs::path path;
+  };
+  std::vector<entry> files;
+  std::uint64_t total = 0;
+  const auto now = fs::file_time_type::clock::now();
+  std::error_code error;
+  for (const auto& item : fs::directory_iterator(dir_, error)) {
+    std::error_code e;
+    const auto used = item.last_write_time(e);
+    if (e) continue;
+    const auto name = item.path().filename().string();
+    // A file left aside by a process that died while writing it.
+    if (name.find(".tmp.") != std::string::npos) {
+      if (now - used > std::chrono::hours(1)) fs::remove(item.path(), e);
+      continue;
+    }
+    if (item.path().extension() != extension) continue;
+    const auto bytes = item.file_size(e);
+    if (e) continue;
+    files.push_back({used, bytes, item.path()});
+    total += bytes;
+  }
+  std::sort(files.begin(), files.end(), [](const entry& a, const entry& b) {
+    return std::tie(a.used, a.path) < std::tie(b.used, b.path);
+  });
+  for (const auto& f : files) {
+    if (total <= max_bytes_) break;
+    if (f.path == keep) continue;
+    std::error_code e;
+    if (fs::remove(f.path, e)) total -= f.bytes;
+  }
+}
+
+field_key::field_key() : context_(new_sha256()) {}
+
+field_key::~field_key() {
+  if (context_ != nullptr) EVP_MD_CTX_free(static_cast<EVP_MD_CTX*>(context_));
+}
+
+void field_key::add(std::span<const std::byte> bytes) {
+  if (context_ == nullptr) throw std::logic_error("field_key: add after hex()");
+  EVP_DigestUpdate(static_cast<EVP_MD_CTX*>(context_), bytes.data(), bytes.size());
+}
+
+std::string field_key::hex() {
+  if (context_ == nullptr) throw std::logic_error("field_key: hex() twice");
+  const auto digest = finish(static_cast<EVP_MD_CTX*>(context_));
+  context_ = nullptr;
+  std::string out;
+  for (const auto b : digest) out += fmt::format("{:02x}", b);
+  return out;
+}
+
+}  // namespace argus::world
