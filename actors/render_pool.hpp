@@ -37,6 +37,9 @@ struct render_request {
   double field_interval_s = 0.0;
   /// The camera's imaging model; none for the raw rendering.
   std::optional<vision::imaging_model> imaging;
+  /// The camera it shows: a distributed run renders it on that camera's worker
+  /// (actors/video_tile_router.hpp).
+  int camera = 0;
 };
 
 /// A rendered frame: the (degraded) BGR image, the imaging model advanced past it (to send

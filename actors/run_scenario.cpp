@@ -20,7 +20,9 @@
 #include "actors/system_config.hpp"
 #include "actors/type_ids.hpp"
 #include "actors/video_recorder.hpp"
+#include "actors/video_tile_router.hpp"
 #include "actors/wire_world.hpp"
+#include "actors/worker_placement.hpp"
 #include "actors/worker_pool.hpp"
 #include "actors/world_coordinator.hpp"
 #include "config/scenario_writer.hpp"
@@ -94,6 +96,8 @@ worker_setup setup_for_workers(const config::scenario& scenario, const run_optio
     setup.sensor_model_text = config::read_whole_file(sensor_model_path(scenario));
   setup.with_visible = options.mot;
   setup.with_poses = options.video;
+  if (options.video && scenario.placement.video == config::video_placement::workers)
+    setup.video = {options.video_width_px, options.video_height_px, true};
   // A worker that may be lost mid-run hands its log over every tick: the evaluation keeps
   // its cameras' frames up to the loss.
   setup.stream_log = options.on_worker_loss == worker_loss::crash_nodes;
@@ -171,7 +175,19 @@ run_outcome run_scenario(const config::scenario& scenario, const run_options& op
   const auto station = world_settings.station;
   render_pool pool;
   const std::size_t renderers = options.render_threads != 0 ? options.render_threads : threads;
-  if (options.video) pool = spawn_render_pool(system, world_settings.station, renderers);
+  const bool video_here =
+      workers.empty() || scenario.placement.video == config::video_placement::coordinator;
+  if (options.video && video_here) {
+    pool = spawn_render_pool(system, world_settings.station, renderers);
+  } else if (options.video) {
+    // Each camera's tiles are rendered by its worker; here only those of a lost worker.
+    video_tile_routes routes;
+    for (const auto& [camera, w] : place_cameras(scenario, workers.size()))
+      routes.hosts[camera] = workers[w].host;
+    routes.station = world_settings.station;
+    routes.local_renderers = renderers;
+    pool.front = spawn_video_tile_router(system, std::move(routes));
+  }
   auto log = std::make_shared<eval::observation_log>(options.mot);
   std::shared_ptr<camera_world> cameras_world;
   if (workers.empty()) {

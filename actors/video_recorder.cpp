@@ -14,6 +14,7 @@
 #include "actors/render_pool.hpp"
 #include "actors/tick_context.hpp"
 #include "actors/type_ids.hpp"
+#include "actors/video_tiles.hpp"
 #include "fmt/format.h"
 #include "vision/feed_mosaic.hpp"
 #include "vision/imaging_model.hpp"
@@ -93,6 +94,7 @@ void record_tick(caf::stateful_actor<video_recorder_state>* self,
   for (std::size_t k = 0; k < st.cameras.size(); ++k) {
     auto& camera = st.cameras[k];
     render_request request;
+    request.camera = camera.id;
     request.view = camera.view;
     camera.down = false;
     if (st.settings.poses) {
@@ -137,6 +139,8 @@ caf::behavior video_recorder(caf::stateful_actor<video_recorder_state>* self,
   const auto layout = vision::feed_mosaic_layout::for_feeds(cameras.size(), settings.tile_width_px,
                                                             settings.tile_height_px);
   st.mosaic = cv::Mat(layout.size(), CV_8UC3, cv::Scalar(0, 0, 0));
+  const video_tile_settings tiles{settings.tile_width_px, settings.tile_height_px,
+                                  settings.imaging};
   for (std::size_t k = 0; k < cameras.size(); ++k) {
     const auto& c = cameras[k];
     recorded_camera rc;
@@ -144,11 +148,8 @@ caf::behavior video_recorder(caf::stateful_actor<video_recorder_state>* self,
     rc.view = {vision::camera_placement::from(c), vision::ptz_camera::from(c).state(),
                settings.tile_width_px, settings.tile_height_px};
     if (settings.imaging) {
-      config::imaging_model imaging = c.imaging;
-      imaging.width_px = static_cast<unsigned>(settings.tile_width_px);
-      imaging.height_px = static_cast<unsigned>(settings.tile_height_px);
-      rc.imaging_settings = imaging;
-      rc.imaging = vision::imaging_model::for_camera(imaging, settings.run_seed, c.id);
+      rc.imaging = video_imaging_model(c, tiles, settings.run_seed);
+      rc.imaging_settings = rc.imaging->settings();
     }
     rc.tile = layout.tile(k);
     st.cameras.push_back(std::move(rc));

@@ -17,8 +17,10 @@
 #include "actors/crowd_partition.hpp"
 #include "actors/link.hpp"
 #include "actors/participant_ids.hpp"
+#include "actors/render_pool.hpp"
 #include "actors/run_observer.hpp"
 #include "actors/type_ids.hpp"
+#include "actors/video_tiles.hpp"
 #include "config/scenario_loader.hpp"
 #include "controller/strategy_registry.hpp"
 #include "fmt/format.h"
@@ -106,6 +108,9 @@ struct hosted_run {
   tick_batch batch;
   /// The last snapshot the coordinator sent: the next arrives as changes to it.
   std::shared_ptr<const world::snapshot> last;
+  /// What renders the video's tiles of its cameras (worker_setup::video), when it does.
+  video_tile_settings video;
+  caf::actor video_renderers;
 };
 
 struct worker_host_state {
@@ -168,6 +173,17 @@ caf::result<std::vector<caf::actor>> set_up(host_actor* self, worker_setup& setu
     run.world = make_camera_world(run.scenario, station, std::move(model),
                                   std::max<std::size_t>(1, st.render_threads), run.log);
     if (setup.with_poses) run.world->poses = std::make_shared<camera_pose_board>();
+    if (setup.video.on()) {
+      run.video = setup.video;
+      run.video_renderers =
+          spawn_render_pool(self->system(), station, std::max<std::size_t>(1, st.render_threads))
+              .front;
+      run.spawned.push_back(run.video_renderers);
+      const auto renderers = std::max<std::size_t>(1, st.render_threads);
+      spdlog::info("worker {}: rendering its cameras' video tiles ({}x{} pixels, {} renderer{})",
+                   st.name, setup.video.width_px, setup.video.height_px, renderers,
+                   renderers == 1 ? "" : "s");
+    }
     run.world->observer = std::make_shared<run_observer>(
         run.log, nullptr, [picks = run.picks](const eval::task_origin& o) { picks->add(o); });
     auto model_of_links = make_link_model(run.scenario);
@@ -185,6 +201,48 @@ caf::result<std::vector<caf::actor>> set_up(host_actor* self, worker_setup& setu
   } catch (const std::exception& e) {
     return refuse(self, fmt::format("worker {} cannot host the run: {}", st.name, e.what()));
   }
+}
+
+const config::camera_settings* camera_of(const hosted_run& run, int id) {
+  for (const auto& c : run.scenario.cameras)
+    if (c.id == id) return &c;
+  return nullptr;
+}
+
+caf::error no_such_camera(host_actor* self, int id) {
+  return refuse(self,
+                fmt::format("worker {}: the scenario has no camera {}", self->state.name, id));
+}
+
+// Renders a tile of the video for the coordinator (actors/video_tiles.hpp): its camera at the
+// pose asked, looking at the snapshot on this worker's board.
+caf::result<video_tile> render_tile(host_actor* self, const video_tile_request& tile) {
+  auto& st = self->state;
+  if (!st.run || !st.run->video_renderers)
+    return refuse(self, fmt::format("worker {} was not set up to render the video", st.name));
+  const auto* camera = camera_of(*st.run, tile.camera);
+  if (!camera) return no_such_camera(self, tile.camera);
+  render_request request;
+  try {
+    std::optional<vision::imaging_model> imaging;
+    if (tile.imaging)
+      imaging = video_imaging_model(*camera, st.run->video, st.run->scenario.run.seed);
+    request = from_tile_request(tile, *camera, st.run->video, st.run->last, std::move(imaging));
+  } catch (const std::invalid_argument& e) {
+    return refuse(self, fmt::format("worker {}: {}", st.name, e.what()));
+  }
+  auto promise = self->make_response_promise<video_tile>();
+  self->request(st.run->video_renderers, caf::infinite, render_atom_v, std::move(request))
+      .then(
+          [promise](render_result& result) mutable {
+            try {
+              promise.deliver(to_tile(result));
+            } catch (const std::invalid_argument& e) {
+              promise.deliver(caf::make_error(caf::sec::runtime_error, e.what()));
+            }
+          },
+          [promise](caf::error& err) mutable { promise.deliver(std::move(err)); });
+  return promise;
 }
 
 // Ticked through this host, as its cameras are; watched, so one that dies is not waited for.
@@ -225,16 +283,12 @@ caf::result<std::vector<caf::actor>> spawn_cameras(host_actor* self,
     return refuse(self, fmt::format("worker {} has no run to spawn cameras in", st.name));
   std::vector<caf::actor> out;
   for (auto& c : cameras) {
-    const auto& all = st.run->scenario.cameras;
-    auto it =
-        std::find_if(all.begin(), all.end(), [&](const auto& cam) { return cam.id == c.camera; });
-    if (it == all.end())
-      return refuse(self,
-                    fmt::format("worker {}: the scenario has no camera {}", st.name, c.camera));
+    const auto* camera = camera_of(*st.run, c.camera);
+    if (!camera) return no_such_camera(self, c.camera);
     link_directory links;
     for (auto& l : c.links) links[l.neighbour] = attached_link{l.participant, std::move(l.handle)};
-    auto node =
-        spawn_camera_node(self->system(), st.run->scenario, *it, std::move(links), st.run->world);
+    auto node = spawn_camera_node(self->system(), st.run->scenario, *camera, std::move(links),
+                                  st.run->world);
     host_participant(self, participant_ids::camera(c.camera), node);
     out.push_back(std::move(node));
   }
@@ -351,6 +405,7 @@ caf::behavior worker_host(host_actor* self, std::string name, std::size_t render
         st.run->world->board->publish(st.run->last);
         return done_atom_v;
       },
+      [self](video_tile_atom, const video_tile_request& tile) { return render_tile(self, tile); },
       [self](take_log_atom) -> eval::observation_log::contents {
         auto& st = self->state;
         if (!st.run) return {};

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "actors/video_tiles.hpp"
 #include "actors/wire_log.hpp"
 #include "caf/actor.hpp"
 #include "eval/records.hpp"
@@ -38,6 +39,8 @@ struct worker_setup {
   bool with_visible = false;
   /// Whether the cameras leave their poses for the coordinator's video (`--video`).
   bool with_poses = false;
+  /// The video's tiles this worker renders for its cameras (`--video`); off for none.
+  video_tile_settings video;
   /// Whether the worker hands its cameras' log over with every gather (`worker_gather::log`)
   /// rather than all at the end: a run that survives a lost worker keeps its frames up to the
   /// loss.
@@ -54,7 +57,7 @@ struct worker_setup {
 template <class Inspector>
 typename Inspector::result_type inspect(Inspector& f, worker_setup& x) {
   return f(x.scenario_yaml, x.layout_text, x.sensor_model_text, x.with_visible, x.with_poses,
-           x.stream_log, x.steps_crowd, x.links, x.coordinator);
+           x.video, x.stream_log, x.steps_crowd, x.links, x.coordinator);
 }
 
 /// One of a camera's links, as the camera node is attached to it (attached_link).

@@ -42,7 +42,8 @@ void add_worker_command(CLI::App& app, int& result) {
                   "Scheduler threads, and those that compute the distance fields (default: one "
                   "per core)");
   cmd->add_option("--render-threads", args->render_threads,
-                  "Renderers for pixel sensing (default: as many as scheduler threads)");
+                  "Renderers for pixel sensing, and for the video's tiles of its cameras (default: "
+                  "as many as scheduler threads)");
   add_tls_options(cmd, args->tls, "worker", "coordinator");
   cmd->callback([args, &result] {
 #ifdef ARGUS_WITH_DISTRIBUTED

@@ -164,6 +164,15 @@ struct enum_names<crowd_placement> {
   }};
 };
 
+/// Names for placement.video.
+template <>
+struct enum_names<video_placement> {
+  static constexpr std::array<enum_entry<video_placement>, 2> entries{{
+      {video_placement::workers, "workers"},
+      {video_placement::coordinator, "coordinator"},
+  }};
+};
+
 /// How an operator task names its target, as the event log writes it.
 template <>
 struct enum_names<task_target> {

@@ -453,9 +453,18 @@ enum class crowd_placement {
   coordinator,
 };
 
+/// Where a distributed run renders the tiles of its `--video` (docs/distributed.md, "Video").
+enum class video_placement {
+  /// Each worker renders its own cameras' tiles from the snapshot on its board.
+  workers,
+  /// The coordinator renders every tile, as in one process (workers without a renderer).
+  coordinator,
+};
+
 struct placement_settings {
   placement_policy policy = placement_policy::region;
   crowd_placement crowd = crowd_placement::workers;
+  video_placement video = video_placement::workers;
   friend bool operator==(const placement_settings&, const placement_settings&) = default;
 };
 

@@ -29,7 +29,7 @@ namespace {
 constexpr std::array<std::string_view, 10> scenario_keys{
     "name",       "run",     "world", "cameras", "network",
     "controller", "sensing", "tasks", "faults",  "placement"};
-constexpr std::array<std::string_view, 2> placement_keys{"policy", "crowd"};
+constexpr std::array<std::string_view, 3> placement_keys{"policy", "crowd", "video"};
 constexpr std::array<std::string_view, 15> sensing_keys{"mode",
                                                         "sensor_model",
                                                         "tracker_scales",
@@ -521,6 +521,7 @@ class scenario_parser {
     mapping_reader placement(reader_, node, "placement", placement_keys);
     placement.read("policy", out.policy);
     placement.read("crowd", out.crowd);
+    placement.read("video", out.video);
   }
 
   void read_sensing(const YAML::Node& node, sensing_settings& out) {

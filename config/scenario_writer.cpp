@@ -296,6 +296,7 @@ std::string to_yaml(const scenario& s) {
   out.line(0, "placement:");
   out.entry(1, "policy", yaml_name(s.placement.policy));
   out.entry(1, "crowd", yaml_name(s.placement.crowd));
+  out.entry(1, "video", yaml_name(s.placement.video));
   return out.take();
 }
 

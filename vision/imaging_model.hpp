@@ -49,6 +49,11 @@ class imaging_model {
   /// Size of the last JPEG encoding in bytes (0 when JPEG is off): the bandwidth a frame
   /// would cost on the network.
   std::size_t last_jpeg_bytes() const noexcept { return last_jpeg_bytes_; }
+  /// Where the noise stands: with the same settings, a model given this state draws the same
+  /// noise from here on. A camera's frames can so be degraded in another process, in turn,
+  /// with only this number crossing (actors/video_tiles.hpp).
+  std::uint64_t noise_state() const noexcept { return rng_.state; }
+  void set_noise_state(std::uint64_t state) noexcept { rng_.state = state; }
 
  private:
   config::imaging_model settings_;

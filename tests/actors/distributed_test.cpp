@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <map>
+#include <opencv2/videoio.hpp>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -201,7 +202,7 @@ TEST(distributed, a_camera_crashed_and_recovered_in_one_tick_comes_back_on_its_w
 }
 
 TEST(distributed, two_workers_record_the_video_one_process_records) {
-  // The cameras move on their workers; the coordinator renders the feeds from their poses.
+  // The cameras move on their workers, which render their tiles; the coordinator tiles them.
   auto with_video = [](const std::filesystem::path& dir) {
     auto s = replay_faults(dir);
     s.run.duration = config::seconds{14.0};
@@ -224,20 +225,28 @@ TEST(distributed, two_workers_record_the_video_one_process_records) {
   EXPECT_TRUE(file_text(dir / "video" / "feeds.avi") == alone)
       << "the video of 2 workers differs from one process's";
   EXPECT_EQ(outputs(dir), outputs(alone_dir));
-  std::filesystem::remove_all(alone_dir);
-  std::filesystem::remove_all(dir);
+  // The same video again with every tile rendered on the coordinator.
+  const auto here_dir = scratch("video-here");
+  auto here = with_video(here_dir);
+  here.placement.video = config::video_placement::coordinator;
+  outcome = run_scenario(here, options);
+  EXPECT_TRUE(outcome.result.failure.empty()) << outcome.result.failure;
+  EXPECT_TRUE(file_text(here_dir / "video" / "feeds.avi") == alone)
+      << "the video rendered on the coordinator differs from one process's";
+  for (const auto& d : {alone_dir, dir, here_dir}) std::filesystem::remove_all(d);
 }
 
-// penn_station_emulated.yaml, 2 minutes, with two local workers of which the second is lost in
-// mid-run, wherever the threads put the loss.
-run_outcome run_losing_a_worker(const std::filesystem::path& dir, worker_loss on_loss) {
+// penn_station_emulated.yaml (2 minutes unless told), with two local workers of which the second is
+// lost in mid-run, wherever the threads put the loss.
+run_outcome run_losing_a_worker(const std::filesystem::path& dir, worker_loss on_loss,
+                                run_options options = {},
+                                config::seconds duration = config::seconds{120.0}) {
   auto s = config::load_scenario(std::filesystem::path(ARGUS_SOURCE_DIR) / "scenarios" /
                                  "penn_station_emulated.yaml");
   s.run.seed = 5;
-  s.run.duration = config::seconds{120.0};
+  s.run.duration = duration;
   s.run.threads = 2;
   s.run.output_dir = dir.string();
-  run_options options;
   options.workers = std::make_shared<losing_workers>(dir);
   options.on_worker_loss = on_loss;
   return run_scenario(s, options);
@@ -269,6 +278,27 @@ TEST(distributed, a_lost_worker_ends_the_run_or_its_cameras_crash) {
     EXPECT_EQ(events.find(line) != std::string::npos, worker == 1) << "camera " << camera;
   }
   EXPECT_TRUE(std::filesystem::exists(dir / "metrics.json"));
+  std::filesystem::remove_all(dir);
+}
+
+TEST(distributed, a_lost_workers_cameras_stay_in_the_video) {
+  // Each worker renders its cameras' tiles; the lost one's are rendered by the coordinator
+  // from then on, so the video keeps one whole frame a tick.
+  const auto dir = scratch("video-lost");
+  run_options options;
+  options.video = true;
+  options.video_width_px = 48;
+  options.video_height_px = 36;
+  // The worker goes once the recorder has written events (after tick 500 or so).
+  auto outcome = run_losing_a_worker(dir, worker_loss::crash_nodes, options, config::seconds{50.0});
+  EXPECT_TRUE(outcome.result.failure.empty()) << outcome.result.failure;
+  ASSERT_EQ(outcome.result.lost_workers.size(), 1u) << "the worker was not lost in the run";
+  const auto events = file_text(dir / "events.jsonl");
+  EXPECT_EQ(events.find("video_render_failed"), std::string::npos);
+  EXPECT_EQ(events.find("video_out_of_step"), std::string::npos);
+  cv::VideoCapture video((dir / "video" / "feeds.avi").string());
+  ASSERT_TRUE(video.isOpened());
+  EXPECT_EQ(video.get(cv::CAP_PROP_FRAME_COUNT), static_cast<double>(outcome.result.ticks));
   std::filesystem::remove_all(dir);
 }
 

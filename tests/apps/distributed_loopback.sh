@@ -4,8 +4,9 @@
 #   distributed_loopback.sh ARGUS SOURCE_DIR OUT
 # - replay_faults.yaml (pixels, every fault kind) with 1, 2 and 3 workers writes the same
 #   events.jsonl, trajectories.csv, poses.csv, tracks.csv and metrics.json (less its wall time)
-#   as one process, and with 2 workers the same --video; the crowd's partitions step on the
-#   workers (five partitions on three workers too), or on the coordinator when asked;
+#   as one process, and with 2 workers the same --video (each worker renders its cameras'
+#   tiles); the crowd's partitions step on the workers (five partitions on three workers too),
+#   or on the coordinator when asked;
 # - a worker killed mid-run: the coordinator ends within 5 s with exit 1, naming the worker and
 #   the last whole tick, and every line of events.jsonl is whole;
 # - the same under --on-worker-loss crash-nodes: exit 0, the run goes on to its end, the lost
@@ -95,7 +96,7 @@ run --set run.output_dir="$OUT/by-id" --workers "$list" --set placement.policy=i
 same_outputs "$OUT/alone" "$OUT/by-id"
 echo "3 workers placed by id: the same outputs as one process"
 
-# --video: the coordinator renders the feeds from the poses the workers' cameras leave.
+# --video: each worker renders its cameras' tiles, the coordinator tiles them into the feeds.
 video() { "$ARGUS" run "$SOURCE/scenarios/replay_faults.yaml" --seed 5 --duration "12 s" \
   --no-feeds --no-progress --set run.threads=2 --video --video-size 80x60 "$@"; }
 video --set run.output_dir="$OUT/video-alone" >"$OUT/video-alone.txt" 2>&1 ||
@@ -104,6 +105,10 @@ video --set run.output_dir="$OUT/video-w2" --workers "${ports[0]},${ports[1]}" >
   fail "the video run with 2 workers: $(tail -3 "$OUT/video-w2.txt")"
 cmp -s "$OUT/video-alone/video/feeds.avi" "$OUT/video-w2/video/feeds.avi" ||
   fail "2 workers recorded another video/feeds.avi"
+for i in 1 2; do
+  grep -q "rendering its cameras' video tiles (80x60 pixels" "$OUT/worker-$i.log" ||
+    fail "worker $i did not render its cameras' video tiles: $(tail -3 "$OUT/worker-$i.log")"
+done
 echo "2 workers, --video: the same feeds.avi as one process"
 
 # A worker killed mid-run.
