@@ -1,6 +1,7 @@
 #include "actors/video_tiles.hpp"
 
 #include <cstring>
+#include <opencv2/imgcodecs.hpp>
 #include <stdexcept>
 #include <utility>
 
@@ -59,24 +60,37 @@ video_tile to_tile(const render_result& result) {
   video_tile out;
   out.width_px = result.image.cols;
   out.height_px = result.image.rows;
-  const auto row_bytes = static_cast<std::size_t>(result.image.cols) * 3;
-  out.bgr.resize(row_bytes * static_cast<std::size_t>(result.image.rows));
-  for (int y = 0; y < result.image.rows; ++y)
-    std::memcpy(out.bgr.data() + row_bytes * static_cast<std::size_t>(y), result.image.ptr(y),
-                row_bytes);
   if (result.imaging) out.noise_state = result.imaging->noise_state();
+  if (result.imaging && !result.imaging->last_jpeg().empty()) {
+    out.jpeg = true;
+    out.bytes = result.imaging->last_jpeg();
+    return out;
+  }
+  const auto row_bytes = static_cast<std::size_t>(result.image.cols) * 3;
+  out.bytes.resize(row_bytes * static_cast<std::size_t>(result.image.rows));
+  for (int y = 0; y < result.image.rows; ++y)
+    std::memcpy(out.bytes.data() + row_bytes * static_cast<std::size_t>(y), result.image.ptr(y),
+                row_bytes);
   return out;
 }
 
 render_result from_tile(video_tile tile, std::optional<vision::imaging_model> imaging) {
-  const auto expected =
-      static_cast<std::size_t>(tile.width_px) * static_cast<std::size_t>(tile.height_px) * 3;
-  if (tile.width_px <= 0 || tile.height_px <= 0 || tile.bgr.size() != expected)
-    throw std::invalid_argument(fmt::format("a video tile of {}x{} pixels came with {} bytes",
-                                            tile.width_px, tile.height_px, tile.bgr.size()));
   render_result out;
-  out.image = cv::Mat(tile.height_px, tile.width_px, CV_8UC3);
-  std::memcpy(out.image.data, tile.bgr.data(), expected);
+  if (tile.jpeg) {
+    out.image = cv::imdecode(tile.bytes, cv::IMREAD_COLOR);
+    if (out.image.cols != tile.width_px || out.image.rows != tile.height_px)
+      throw std::invalid_argument(fmt::format(
+          "a video tile of {}x{} pixels came with {} bytes of JPEG that decode to {}x{}",
+          tile.width_px, tile.height_px, tile.bytes.size(), out.image.cols, out.image.rows));
+  } else {
+    const auto expected =
+        static_cast<std::size_t>(tile.width_px) * static_cast<std::size_t>(tile.height_px) * 3;
+    if (tile.width_px <= 0 || tile.height_px <= 0 || tile.bytes.size() != expected)
+      throw std::invalid_argument(fmt::format("a video tile of {}x{} pixels came with {} bytes",
+                                              tile.width_px, tile.height_px, tile.bytes.size()));
+    out.image = cv::Mat(tile.height_px, tile.width_px, CV_8UC3);
+    std::memcpy(out.image.data, tile.bytes.data(), expected);
+  }
   if (imaging) {
     imaging->set_noise_state(tile.noise_state);
     out.imaging = std::move(imaging);

@@ -111,6 +111,9 @@ struct hosted_run {
   /// What renders the video's tiles of its cameras (worker_setup::video), when it does.
   video_tile_settings video;
   caf::actor video_renderers;
+  /// Tiles sent back, and their bytes (logged when the run ends).
+  std::uint64_t tiles_sent = 0;
+  std::uint64_t tile_bytes_sent = 0;
 };
 
 struct worker_host_state {
@@ -134,6 +137,11 @@ caf::error refuse(caf::local_actor* self, std::string why) {
 void end_run(host_actor* self) {
   auto& st = self->state;
   if (!st.run) return;
+  if (st.run->tiles_sent > 0)
+    spdlog::info("worker {}: sent {} video tiles, {:.1f} MB ({:.1f} KB a tile)", st.name,
+                 st.run->tiles_sent, static_cast<double>(st.run->tile_bytes_sent) / 1e6,
+                 static_cast<double>(st.run->tile_bytes_sent) / 1e3 /
+                     static_cast<double>(st.run->tiles_sent));
   for (auto& a : st.run->spawned) self->send_exit(a, caf::exit_reason::user_shutdown);
   st.run.reset();
 }
@@ -234,9 +242,14 @@ caf::result<video_tile> render_tile(host_actor* self, const video_tile_request& 
   auto promise = self->make_response_promise<video_tile>();
   self->request(st.run->video_renderers, caf::infinite, render_atom_v, std::move(request))
       .then(
-          [promise](render_result& result) mutable {
+          [self, promise](render_result& result) mutable {
             try {
-              promise.deliver(to_tile(result));
+              auto tile = to_tile(result);
+              if (auto& run = self->state.run) {
+                ++run->tiles_sent;
+                run->tile_bytes_sent += tile.bytes.size();
+              }
+              promise.deliver(std::move(tile));
             } catch (const std::invalid_argument& e) {
               promise.deliver(caf::make_error(caf::sec::runtime_error, e.what()));
             }

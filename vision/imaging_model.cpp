@@ -80,9 +80,9 @@ cv::Mat imaging_model::degrade(cv::Mat frame) {
   if (settings_.dropout_fraction > 0.0) {
     add_dropout(out, settings_.dropout_fraction, settings_.dropout, rng_);
   }
-  last_jpeg_bytes_ = 0;
+  last_jpeg_.clear();
   if (settings_.jpeg_quality > 0) {
-    out = jpeg_round_trip(out, static_cast<int>(settings_.jpeg_quality), &last_jpeg_bytes_);
+    out = jpeg_round_trip(out, static_cast<int>(settings_.jpeg_quality), last_jpeg_);
   }
   return out;
 }
@@ -299,14 +299,19 @@ std::size_t add_dropout(cv::Mat& frame, double fraction, config::dropout_kind ki
 }
 
 cv::Mat jpeg_round_trip(const cv::Mat& frame, int quality, std::size_t* encoded_bytes) {
+  std::vector<std::uint8_t> bytes;
+  auto out = jpeg_round_trip(frame, quality, bytes);
+  if (encoded_bytes != nullptr) *encoded_bytes = bytes.size();
+  return out;
+}
+
+cv::Mat jpeg_round_trip(const cv::Mat& frame, int quality, std::vector<std::uint8_t>& encoded) {
   require_bgr(frame, "jpeg_round_trip");
-  std::vector<uchar> bytes;
-  if (!cv::imencode(".jpg", frame, bytes,
+  if (!cv::imencode(".jpg", frame, encoded,
                     {cv::IMWRITE_JPEG_QUALITY, std::clamp(quality, 1, 100)})) {
     throw std::runtime_error("jpeg_round_trip: JPEG encoding failed");
   }
-  if (encoded_bytes != nullptr) *encoded_bytes = bytes.size();
-  cv::Mat out = cv::imdecode(bytes, cv::IMREAD_COLOR);
+  cv::Mat out = cv::imdecode(encoded, cv::IMREAD_COLOR);
   if (out.empty()) throw std::runtime_error("jpeg_round_trip: JPEG decoding failed");
   return out;
 }

@@ -3,6 +3,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <opencv2/core.hpp>
+#include <vector>
 
 #include "config/scenario.hpp"
 
@@ -48,7 +49,10 @@ class imaging_model {
 
   /// Size of the last JPEG encoding in bytes (0 when JPEG is off): the bandwidth a frame
   /// would cost on the network.
-  std::size_t last_jpeg_bytes() const noexcept { return last_jpeg_bytes_; }
+  std::size_t last_jpeg_bytes() const noexcept { return last_jpeg_.size(); }
+  /// The JPEG encoding of the last degraded frame (empty when JPEG is off). JPEG is the last
+  /// step, so decoding it gives that frame's pixels: a frame can travel as these bytes.
+  const std::vector<std::uint8_t>& last_jpeg() const noexcept { return last_jpeg_; }
   /// Where the noise stands: with the same settings, a model given this state draws the same
   /// noise from here on. A camera's frames can so be degraded in another process, in turn,
   /// with only this number crossing (actors/video_tiles.hpp).
@@ -58,7 +62,7 @@ class imaging_model {
  private:
   config::imaging_model settings_;
   cv::RNG rng_;
-  std::size_t last_jpeg_bytes_ = 0;
+  std::vector<std::uint8_t> last_jpeg_;
 };
 
 /// Even rows of `first_field`, odd rows of `second_field` (same size and type).
@@ -86,5 +90,7 @@ std::size_t add_dropout(cv::Mat& frame, double fraction, config::dropout_kind ki
 /// JPEG encode at `quality` (1-100) and decode; `encoded_bytes`, if given, receives the size
 /// of the encoding.
 cv::Mat jpeg_round_trip(const cv::Mat& frame, int quality, std::size_t* encoded_bytes = nullptr);
+/// The same, keeping the encoding in `encoded`.
+cv::Mat jpeg_round_trip(const cv::Mat& frame, int quality, std::vector<std::uint8_t>& encoded);
 
 }  // namespace argus::vision

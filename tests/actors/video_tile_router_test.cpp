@@ -1,8 +1,9 @@
 // A distributed run's video tiles (docs/distributed.md, "Video"): each camera's is rendered by
-// the worker that hosts it, and is the same to the byte as one rendered here, its noise carried
-// on from tick to tick; a lost worker's tiles, in flight or later, are rendered here with the
-// same bytes again. The worker hosts here are stand-ins that render as `argus worker` does, with
-// the same conversions (actors/video_tiles.hpp); distributed_test runs the real ones.
+// the worker that hosts it, crosses as the imaging model's JPEG bytes or as raw rows, and is the
+// same to the byte as one rendered here, its noise carried on from tick to tick; a lost worker's
+// tiles, in flight or later, are rendered here with the same bytes again. The worker hosts here are
+// stand-ins that render as `argus worker` does, with the same conversions (actors/video_tiles.hpp);
+// distributed_test runs the real ones.
 
 #include "actors/video_tile_router.hpp"
 
@@ -222,6 +223,60 @@ TEST(video_tile_router, a_lost_workers_tiles_are_rendered_here_in_flight_and_aft
   EXPECT_EQ(held->load(), 1);
   EXPECT_EQ(served->load(), 0);
   caf::anon_send_exit(router, caf::exit_reason::user_shutdown);
+}
+
+// A degraded frame as a worker's render pool answers it: a smooth gradient with the imaging
+// model's noise, dropout and JPEG (when `jpeg_quality` > 0).
+render_result degraded_frame(unsigned jpeg_quality) {
+  config::imaging_model settings;
+  settings.width_px = 96;
+  settings.height_px = 72;
+  settings.noise_sigma = 3.0;
+  settings.dropout_fraction = 0.002;
+  settings.jpeg_quality = jpeg_quality;
+  render_result out;
+  out.imaging = vision::imaging_model(settings, 7);
+  cv::Mat clean(72, 96, CV_8UC3);
+  for (int y = 0; y < clean.rows; ++y)
+    for (int x = 0; x < clean.cols; ++x)
+      clean.at<cv::Vec3b>(y, x) = {static_cast<std::uint8_t>(x * 2),
+                                   static_cast<std::uint8_t>(y * 3),
+                                   static_cast<std::uint8_t>(x + y)};
+  out.image = out.imaging->degrade(clean);
+  return out;
+}
+
+TEST(video_tiles, a_tile_arrives_with_its_pixels_as_jpeg_bytes_or_raw_rows) {
+  for (unsigned quality : {75u, 0u}) {
+    auto rendered = degraded_frame(quality);
+    auto tile = to_tile(rendered);
+    EXPECT_EQ(tile.jpeg, quality > 0);
+    const std::size_t raw = 96 * 72 * 3;
+    if (quality > 0)
+      EXPECT_LT(tile.bytes.size(), raw / 3) << "JPEG bytes should be far fewer than raw rows";
+    else
+      EXPECT_EQ(tile.bytes.size(), raw);
+    // The coordinator's model went out before the frame: it comes back at the worker's state.
+    vision::imaging_model before(rendered.imaging->settings(), 7);
+    auto arrived = from_tile(tile, before);
+    ASSERT_EQ(arrived.image.size(), rendered.image.size());
+    EXPECT_EQ(cv::norm(arrived.image, rendered.image, cv::NORM_INF), 0.0) << "quality " << quality;
+    ASSERT_TRUE(arrived.imaging.has_value());
+    EXPECT_EQ(arrived.imaging->noise_state(), rendered.imaging->noise_state());
+    EXPECT_NE(arrived.imaging->noise_state(), before.noise_state());
+  }
+}
+
+TEST(video_tiles, a_tile_whose_bytes_do_not_make_it_is_refused) {
+  auto short_rows = to_tile(degraded_frame(0));
+  short_rows.bytes.resize(short_rows.bytes.size() / 2);
+  EXPECT_THROW(from_tile(short_rows, std::nullopt), std::invalid_argument);
+  auto not_jpeg = to_tile(degraded_frame(75));
+  not_jpeg.bytes.assign(100, 0x55);
+  EXPECT_THROW(from_tile(not_jpeg, std::nullopt), std::invalid_argument);
+  auto other_size = to_tile(degraded_frame(75));
+  other_size.width_px = 48;
+  EXPECT_THROW(from_tile(other_size, std::nullopt), std::invalid_argument);
 }
 
 }  // namespace
