@@ -6,7 +6,7 @@
 #   writes;
 # - refused, each with a message naming the worker and the reason: a coordinator certificate of
 #   another CA, an expired one, a coordinator without TLS, and a TLS coordinator meeting a worker
-#   without it;
+#   without it; the worker logs each connection it refused, naming the peer and the reason;
 # - beyond loopback only with TLS, for a worker's --listen and a coordinator's --workers;
 # - no private key in any output.
 set -u
@@ -74,6 +74,17 @@ refused plain-coordinator "$secure" "it speaks TLS"
 refused plain-worker "$plain" "does not speak TLS" $(tls coordinator)
 refused wrong-ca "$secure" "its certificate is refused: it is not signed by the CA" $(tls stranger | sed "s|ca-a.pem|ca-b.pem|")
 grep -q "expired" "$OUT/expired.txt" || fail "no warning of the expired certificate"
+# The worker says so too, naming the coordinator's address and the reason.
+wlog=$OUT/worker-tls.log
+grep -q "refused a TLS connection from 127.0.0.1:[0-9]*: its certificate is refused: unable to get local issuer certificate" "$wlog" ||
+  fail "the worker did not log the other CA's certificate: $(grep refused "$wlog")"
+grep -q "refused a TLS connection from 127.0.0.1:[0-9]*: its certificate is refused: certificate has expired" "$wlog" ||
+  fail "the worker did not log the expired certificate: $(grep refused "$wlog")"
+grep -q "refused a TLS connection from 127.0.0.1:[0-9]*: it does not speak TLS" "$wlog" ||
+  fail "the worker did not log the coordinator without TLS: $(grep refused "$wlog")"
+grep -q "refused a TLS connection from 127.0.0.1:[0-9]*: it refused the handshake (OpenSSL: .*unknown ca)" "$wlog" ||
+  fail "the worker did not log the coordinator that refused its certificate: $(grep refused "$wlog")"
+echo "the worker logged each refused connection: $(grep -o "refused a TLS connection.*" "$wlog" | sort -u | sed 's/from 127.0.0.1:[0-9]*/from 127.0.0.1:PORT/' | sort -u | tr '\n' ';')"
 grep -q "not signed by --tls-ca" "$OUT/other-ca.txt" || fail "no warning of the stranger's certificate"
 
 "$ARGUS" worker --listen 0.0.0.0:0 >"$OUT/open.txt" 2>&1 && fail "a worker listened beyond loopback without TLS"
