@@ -165,7 +165,7 @@ run_outcome run_scenario(const config::scenario& scenario, const run_options& op
   world_run_settings world_settings;
   world::navigation_settings navigation;
   navigation.threads = static_cast<unsigned>(threads);
-  navigation.field_cache = world::field_cache::default_dir().value_or(std::filesystem::path{});
+  navigation.field_cache = world::field_cache::default_dir_or_none();
   world_settings.station = options.station
                                ? options.station
                                : world::station::load(world::layout_path(scenario), navigation);

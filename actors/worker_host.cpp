@@ -161,7 +161,7 @@ caf::result<std::vector<caf::actor>> set_up(host_actor* self, worker_setup& setu
     looked_at.fields = setup.steps_crowd;
     looked_at.threads = st.field_threads;
     // The coordinator has just stored the fields in this machine's cache, if it shares it.
-    looked_at.field_cache = world::field_cache::default_dir().value_or(std::filesystem::path{});
+    looked_at.field_cache = world::field_cache::default_dir_or_none();
     auto station =
         world::station::load(run.files->write("layout.yaml", setup.layout_text), looked_at);
     if (setup.steps_crowd)

@@ -26,12 +26,9 @@ pids=()
 trap 'for p in "${pids[@]}"; do kill "$p" 2>/dev/null; done; rm -rf "$out"' EXIT
 
 workers=()
-for i in 1 2 3 4; do
-  "$argus" worker --listen 127.0.0.1:0 >"$out/worker-$i.log" 2>&1 &
-  pids+=($!)
-  for _ in $(seq 100); do grep -q "listening on" "$out/worker-$i.log" && break; sleep 0.1; done
-  workers+=("$(sed -n 's/^argus worker: listening on //p' "$out/worker-$i.log")")
-done
+# shellcheck source=bench/bench_workers.sh
+source "$root/bench/bench_workers.sh"
+start_workers 4
 two="${workers[0]},${workers[1]}"
 four="${workers[0]},${workers[1]},${workers[2]},${workers[3]}"
 

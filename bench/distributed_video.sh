@@ -21,12 +21,9 @@ pids=()
 trap 'for p in "${pids[@]}"; do kill "$p" 2>/dev/null; done; rm -rf "$out"' EXIT
 
 workers=()
-for i in 1 2; do
-  "$argus" worker --listen 127.0.0.1:0 >"$out/worker-$i.log" 2>&1 &
-  pids+=($!)
-  for _ in $(seq 100); do grep -q "listening on" "$out/worker-$i.log" && break; sleep 0.1; done
-  workers+=("$(sed -n 's/^argus worker: listening on //p' "$out/worker-$i.log")")
-done
+# shellcheck source=bench/bench_workers.sh
+source "$root/bench/bench_workers.sh"
+start_workers 2
 two="${workers[0]},${workers[1]}"
 run=("$argus" run "$root/scenarios/$scenario" --seed 1 --no-feeds --no-progress --video
      --video-size "$size")

@@ -75,7 +75,7 @@ class report_builder {
       // The feeds' key frames walk the crowd again, so the fields are needed: after a run they
       // are in the field cache it has just filled, and read back instead of computed again.
       world::navigation_settings settings;
-      settings.field_cache = world::field_cache::default_dir().value_or(std::filesystem::path{});
+      settings.field_cache = world::field_cache::default_dir_or_none();
       station_ = world::station::load(world::layout_path(*given), settings);
     } catch (const std::exception& e) {
       leave_out(fmt::format("station layout: {}", e.what()));

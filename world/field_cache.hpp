@@ -34,6 +34,10 @@ class field_cache {
   /// Where runs keep it: `$ARGUS_FIELD_CACHE`, else `$XDG_CACHE_HOME/argus/fields`, else
   /// `$HOME/.cache/argus/fields`; none when `ARGUS_FIELD_CACHE` is `off` or there is no home.
   static std::optional<std::filesystem::path> default_dir();
+  /// The same as `navigation_settings::field_cache` takes it: empty for none.
+  static std::filesystem::path default_dir_or_none() {
+    return default_dir().value_or(std::filesystem::path{});
+  }
 
   /// The `fields` fields of `cells` values each stored under `key`, if a whole file of this
   /// version with a matching checksum is there (and it is marked as just used).
