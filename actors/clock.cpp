@@ -288,8 +288,15 @@ class clock_actor : public caf::event_based_actor {
     if (entry_it == participants_.end()) return;
     const auto& info = entry_it->second.info;
     auto name = info.name;
-    if (!info.host.empty() && msg.reason == caf::exit_reason::remote_link_unreachable) {
-      lose_worker(info.host, name);
+    // A worker's participants end with the worker: unreachable when it died or its connection
+    // broke, shut down when it was stopped (SIGTERM, Ctrl-C). Nothing else ends them with
+    // user_shutdown mid-run: a crash fault retires its node first.
+    if (!info.host.empty() && (msg.reason == caf::exit_reason::remote_link_unreachable ||
+                               msg.reason == caf::exit_reason::user_shutdown)) {
+      lose_worker(info.host, fmt::format("{} {}", name,
+                                         msg.reason == caf::exit_reason::user_shutdown
+                                             ? "ended: the worker was shut down"
+                                             : "unreachable"));
       return;
     }
     if (info.mode == wake_mode::never || id == participant_ids::world_coordinator) {
@@ -329,16 +336,16 @@ class clock_actor : public caf::event_based_actor {
   // A distributed run's worker is gone with everything it hosted (docs/distributed.md): the
   // tick in progress cannot complete, so the run ends with the last whole one, its outputs
   // complete up to it, and fails naming the worker.
-  void lose_worker(const std::string& host, const std::string& participant) {
+  // `what`: the participant that told, and how it went ("camera/3 unreachable").
+  void lose_worker(const std::string& host, const std::string& what) {
     if (finished_) return;
     if (settings_.on_worker_loss == worker_loss::crash_nodes) {
-      crash_worker_nodes(host, participant);
+      crash_worker_nodes(host, what);
       return;
     }
     stop_reason_ = fmt::format(
-        "worker {} was lost during tick {} ({} unreachable); the outputs are complete up to "
-        "tick {}",
-        host, tick_, participant, tick_ - 1);
+        "worker {} was lost during tick {} ({}); the outputs are complete up to tick {}", host,
+        tick_, what, tick_ - 1);
     spdlog::error("clock: {}", stop_reason_);
     batch_.clear();
     std::vector<std::uint64_t> gone;
@@ -379,7 +386,7 @@ class clock_actor : public caf::event_based_actor {
   // crashed camera does, and the fault injector takes its cameras down in the next tick's
   // faults phase (links, events). The tick in progress completes without them: what they
   // acknowledged before the loss stays in it, so from this tick on the run is not one process's.
-  void crash_worker_nodes(const std::string& host, const std::string& participant) {
+  void crash_worker_nodes(const std::string& host, const std::string& what) {
     lost_worker lost{host, tick_, {}};
     for (const auto& [id, e] : participants_)
       if (e.info.host == host) lost.participants.push_back(id);
@@ -389,10 +396,10 @@ class clock_actor : public caf::event_based_actor {
                                         [&](const auto& j) { return j.second.host == host; }),
                          pending_joins_.end());
     spdlog::warn(
-        "clock: worker {} was lost during tick {} ({} unreachable); its {} participants go on "
+        "clock: worker {} was lost during tick {} ({}); its {} participants go on "
         "as crashed nodes (--on-worker-loss crash-nodes), so the run is the same as one "
         "process's only up to tick {}",
-        host, tick_, participant, lost.participants.size(), tick_ - 1);
+        host, tick_, what, lost.participants.size(), tick_ - 1);
     result_.lost_workers.push_back(fmt::format("{} at tick {}", host, tick_));
     batches_.erase(host);
     const bool in_phase = started_ && awaiting_ > 0;

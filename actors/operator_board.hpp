@@ -42,6 +42,16 @@ class operator_board {
     return out;
   }
 
+  /// Every order published since `cursor`; moves `cursor` past them (the world coordinator of a
+  /// live run across workers, phase network, passes them on to the workers).
+  std::vector<operator_order> take_all_new(std::size_t& cursor) const {
+    std::lock_guard<std::mutex> guard(mutex_);
+    std::vector<operator_order> out(orders_.begin() + static_cast<std::ptrdiff_t>(cursor),
+                                    orders_.end());
+    cursor = orders_.size();
+    return out;
+  }
+
  private:
   mutable std::mutex mutex_;
   std::vector<operator_order> orders_;

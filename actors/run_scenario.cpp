@@ -74,16 +74,28 @@ void evaluate_run(const config::scenario& scenario, const world::station& statio
 }
 
 // What a distributed run cannot do yet, said before anything starts (docs/distributed.md).
-void check_distributable(const config::scenario& scenario, const run_options& options) {
+void check_distributable(const config::scenario& scenario) {
   auto refuse = [](const std::string& what) {
     throw std::runtime_error("--workers: " + what + " runs in one process only, for now");
   };
-  if (options.live) refuse("a live run (argus serve)");
   if (scenario.sensing.geometry != config::group_geometry::none)
     refuse("sensing.group_geometry (cameras share a board)");
   if (scenario.sensing.reappearance != config::reappearance_model::none)
     refuse("sensing.reappearance (cameras share a board)");
   if (controller::is_oracle(scenario)) refuse("an oracle strategy (it sees every camera)");
+}
+
+// What the workers' cameras showed since the last gather, on the live console as one process's
+// cameras would have put it there.
+void show_on_console(live::console_state& console, live_display shown) {
+  console.add_traffic(shown.sent, shown.received);
+  for (auto& c : shown.cameras) {
+    std::vector<cv::Rect2d> boxes;
+    for (std::size_t i = 0; i + 3 < c.boxes.size(); i += 4)
+      boxes.emplace_back(c.boxes[i], c.boxes[i + 1], c.boxes[i + 2], c.boxes[i + 3]);
+    console.publish_camera_jpeg(c.camera, c.tick, c.pan_deg, c.tilt_deg, c.field_of_view_deg,
+                                std::move(c.jpeg), std::move(boxes));
+  }
 }
 
 // What a worker needs to host its part of `scenario`: the scenario and the files it names.
@@ -102,6 +114,7 @@ worker_setup setup_for_workers(const config::scenario& scenario, const run_optio
   // its cameras' frames up to the loss.
   setup.stream_log = options.on_worker_loss == worker_loss::crash_nodes;
   setup.coordinator = std::move(anchor);
+  setup.live = options.live != nullptr;
   return setup;
 }
 
@@ -141,7 +154,7 @@ run_outcome run_scenario(const config::scenario& scenario, const run_options& op
   // A strategy that cannot be made fails here, naming the field, before any actor runs.
   controller::resolve_strategy(scenario);
   const auto& pool_of_workers = options.workers;
-  if (pool_of_workers) check_distributable(scenario, options);
+  if (pool_of_workers) check_distributable(scenario);
   const bool show_progress = options.show_progress;
   auto threads = scenario.run.threads != 0 ? scenario.run.threads
                                            : std::max(1u, std::thread::hardware_concurrency());
@@ -231,7 +244,16 @@ run_outcome run_scenario(const config::scenario& scenario, const run_options& op
       console->publish_snapshot(frame);
     });
   }
-  if (workers.empty()) cameras_world->observer = std::make_shared<run_observer>(log, console);
+  if (workers.empty()) {
+    cameras_world->observer = std::make_shared<run_observer>(log, console);
+  } else if (live) {
+    // The workers' cameras read the orders here, sent on with each snapshot, and show
+    // themselves through what comes back with each gather.
+    world_settings.operators = operators;
+    world_settings.display_gathered = [console](live_display shown) {
+      show_on_console(*console, std::move(shown));
+    };
+  }
   if (options.video) {
     video_settings vs;
     vs.file = outcome.output_dir / "video" / "feeds.avi";

@@ -15,6 +15,7 @@
 #include "actors/camera_pose_board.hpp"
 #include "actors/camera_world_setup.hpp"
 #include "actors/crowd_partition.hpp"
+#include "actors/display_relay.hpp"
 #include "actors/link.hpp"
 #include "actors/participant_ids.hpp"
 #include "actors/render_pool.hpp"
@@ -114,6 +115,8 @@ struct hosted_run {
   /// Tiles sent back, and their bytes (logged when the run ends).
   std::uint64_t tiles_sent = 0;
   std::uint64_t tile_bytes_sent = 0;
+  /// What the console shows of its cameras, in a live run (worker_setup::live); null otherwise.
+  std::shared_ptr<display_relay> display;
 };
 
 struct worker_host_state {
@@ -192,8 +195,16 @@ caf::result<std::vector<caf::actor>> set_up(host_actor* self, worker_setup& setu
                    st.name, setup.video.width_px, setup.video.height_px, renderers,
                    renderers == 1 ? "" : "s");
     }
-    run.world->observer = std::make_shared<run_observer>(
+    auto observer = std::make_shared<run_observer>(
         run.log, nullptr, [picks = run.picks](const eval::task_origin& o) { picks->add(o); });
+    if (setup.live) {
+      // The operator's orders arrive with the world's snapshot, before the cameras' turns.
+      run.world->operators = std::make_shared<operator_board>();
+      run.display = std::make_shared<display_relay>(std::move(observer));
+      run.world->observer = run.display;
+    } else {
+      run.world->observer = std::move(observer);
+    }
     auto model_of_links = make_link_model(run.scenario);
     std::vector<caf::actor> links;
     for (const auto& l : setup.links) {
@@ -203,8 +214,8 @@ caf::result<std::vector<caf::actor>> set_up(host_actor* self, worker_setup& setu
     if (setup.coordinator) self->monitor(setup.coordinator);
     run.coordinator = setup.coordinator;
     st.run = std::move(run);
-    spdlog::info("worker {}: hosting '{}' ({} links)", st.name, st.run->scenario.name,
-                 links.size());
+    spdlog::info("worker {}: hosting '{}' ({} links{})", st.name, st.run->scenario.name,
+                 links.size(), st.run->display ? ", live: the operator's orders come here" : "");
     return links;
   } catch (const std::exception& e) {
     return refuse(self, fmt::format("worker {} cannot host the run: {}", st.name, e.what()));
@@ -402,7 +413,13 @@ caf::behavior worker_host(host_actor* self, std::string name, std::size_t render
           for (const auto& [camera, e] : poses->latest())
             out.poses.push_back({camera, e.tick, e.pose});
         if (st.run->stream_log) out.log = st.run->log->take_recorded();
+        if (st.run->display) out.display = st.run->display->take();
         return out;
+      },
+      [self](operator_orders_atom, std::vector<operator_order>& orders) {
+        auto& st = self->state;
+        if (!st.run || !st.run->world->operators) return;
+        for (auto& order : orders) st.run->world->operators->publish(std::move(order));
       },
       [self](board_atom, const serialized_delta& delta,
              const std::vector<eval::task_origin>& picks) -> caf::result<done_atom> {

@@ -35,11 +35,13 @@ const char* argus_version();
 /// - `(spawn_partition_atom, partition_placement)` -> `caf::actor`: spawns a crowd partition that
 ///   reads its worker's board (a setup with `steps_crowd`, which loaded the distance fields);
 /// - every tick, in phase network, `(gather_atom)` -> `worker_gather`: the picks its cameras
-///   made since it was last asked, by task, and with `--video` each camera's latest pose; then
-///   `(board_atom, serialized_delta, std::vector<eval::task_origin> picks)` -> `done_atom`: the
-///   picks of every worker join its log, and the world's new snapshot, rebuilt from the last one
-///   and the delta, its board, before its cameras' turns; an error when the delta does not fit the
-///   last snapshot;
+///   made since it was last asked, by task, with `--video` each camera's latest pose, and in a
+///   live run what the console shows of its cameras; in a live run, `(operator_orders_atom,
+///   std::vector<operator_order>)` (no answer): the operator's new orders, onto the operator board
+///   its cameras read; then `(board_atom, serialized_delta, std::vector<eval::task_origin> picks)`
+///   -> `done_atom`: the picks of every worker join its log, and the world's new snapshot, rebuilt
+///   from the last one and the delta, its board, before its cameras' turns; an error when the delta
+///   does not fit the last snapshot;
 /// - `(take_log_atom)` -> `eval::observation_log::contents`: what its cameras recorded;
 /// - `(release_atom)` -> `done_atom`: ends what it hosted and waits for the next run.
 caf::actor spawn_worker_host(caf::actor_system& system, std::string name,

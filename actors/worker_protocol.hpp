@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "actors/video_tiles.hpp"
+#include "actors/wire_live.hpp"
 #include "actors/wire_log.hpp"
 #include "caf/actor.hpp"
 #include "eval/records.hpp"
@@ -52,12 +53,16 @@ struct worker_setup {
   /// An actor that lives as long as the coordinator's run: when it goes (the run ended, the
   /// coordinator died or its connection broke), the worker ends what it hosted.
   caf::actor coordinator;
+  /// Whether the run is live (`argus serve`): its cameras then read the operator's orders that
+  /// come with the world's snapshot (`operator_orders_atom`), and it hands what the console shows
+  /// of them over with every gather (`worker_gather::display`).
+  bool live = false;
 };
 
 template <class Inspector>
 typename Inspector::result_type inspect(Inspector& f, worker_setup& x) {
   return f(x.scenario_yaml, x.layout_text, x.sensor_model_text, x.with_visible, x.with_poses,
-           x.video, x.stream_log, x.steps_crowd, x.links, x.coordinator);
+           x.video, x.stream_log, x.steps_crowd, x.links, x.coordinator, x.live);
 }
 
 /// One of a camera's links, as the camera node is attached to it (attached_link).
@@ -98,16 +103,18 @@ typename Inspector::result_type inspect(Inspector& f, pose_record& x) {
 
 /// A worker's answer to `gather_atom`: the picks its cameras made since it was last asked, by
 /// task; in a run with `--video`, each of its cameras' latest pose; with
-/// `worker_setup::stream_log`, what its cameras recorded since it was last asked.
+/// `worker_setup::stream_log`, what its cameras recorded since it was last asked; in a live run,
+/// what the console shows of its cameras.
 struct worker_gather {
   std::vector<eval::task_origin> picks;
   std::vector<pose_record> poses;
   eval::observation_log::contents log;
+  live_display display;
 };
 
 template <class Inspector>
 typename Inspector::result_type inspect(Inspector& f, worker_gather& x) {
-  return f(x.picks, x.poses, x.log);
+  return f(x.picks, x.poses, x.log, x.display);
 }
 
 }  // namespace argus::actors

@@ -72,6 +72,8 @@ struct coordinator_setup {
   std::function<void(const std::vector<pose_record>&)> poses_gathered;
   std::function<void(eval::observation_log::contents)> log_gathered;
   worker_loss on_worker_loss = worker_loss::end_run;
+  std::shared_ptr<const operator_board> operators;
+  std::function<void(live_display)> display_gathered;
 };
 
 // A distributed tick in progress: the workers whose answers are still awaited, then the ack.
@@ -97,6 +99,8 @@ struct world_coordinator_state {
   ordered_inbox<partition_report> reports;
   std::uint64_t sent = 0;
   remote_exchange exchange;
+  /// How many of the operator's orders have gone out to the workers.
+  std::size_t orders_sent = 0;
 };
 
 // Opens `<path>.partial` and pedestrians.csv.partial beside it; throws when either cannot be
@@ -258,6 +262,11 @@ void publish_to_workers(coordinator_actor* self) {
   auto delta = delta_between(st.published.get(), *st.current);
   const auto bytes = serialize(delta);
   st.published = st.current;
+  // Sent before the snapshot by the same actor, so each worker has them before it answers it.
+  if (st.setup->operators)
+    if (auto orders = st.setup->operators->take_all_new(st.orders_sent); !orders.empty())
+      for (const auto& board : st.setup->remote_boards)
+        self->send(board, operator_orders_atom_v, orders);
   for (const auto& board : st.setup->remote_boards) ex.awaited.insert(board.address());
   for (const auto& board : st.setup->remote_boards)
     self->request(board, caf::infinite, board_atom_v, bytes, ex.picks)
@@ -286,6 +295,8 @@ void gather_picks(coordinator_actor* self, tick_context ctx, caf::actor clock,
               // Each camera is on one worker: the order of the workers' answers cannot matter.
               if (st.setup->poses_gathered) st.setup->poses_gathered(gathered.poses);
               if (st.setup->log_gathered) ex.logs[w] = std::move(gathered.log);
+              if (st.setup->display_gathered)
+                st.setup->display_gathered(std::move(gathered.display));
               worker_answered(self, addr);
             },
             [self, addr = boards[w].address()](caf::error& err) {
@@ -459,7 +470,8 @@ world_actors spawn_world(caf::actor_system& system, world_run_settings settings)
                         on_worker, std::move(settings.snapshot_observers), settings.board,
                         std::move(settings.remote_boards), std::move(settings.picks_gathered),
                         std::move(settings.poses_gathered), std::move(settings.log_gathered),
-                        settings.on_worker_loss});
+                        settings.on_worker_loss, std::move(settings.operators),
+                        std::move(settings.display_gathered)});
   for (std::size_t i = 0; i < partitions.size(); ++i) {
     caf::anon_send(partitions[i], world_attach_atom_v, coordinator);
     out.participants.emplace_back(partitions[i], infos[i]);

@@ -8,8 +8,10 @@
 #include <utility>
 #include <vector>
 
+#include "actors/operator_board.hpp"
 #include "actors/participant_info.hpp"
 #include "actors/snapshot_board.hpp"
+#include "actors/wire_live.hpp"
 #include "actors/worker_loss.hpp"
 #include "actors/worker_protocol.hpp"
 #include "caf/actor.hpp"
@@ -67,6 +69,13 @@ struct world_run_settings {
   /// Where each crowd partition steps, by index (`placement.crowd: workers`); empty, or a
   /// null host, for here. A worker's partition is spawned there (`spawn_partition_atom`).
   std::vector<partition_host> partition_hosts;
+  /// A live run across workers (`argus serve --workers`): the operator's orders published here
+  /// go out to every worker with the next snapshot (`operator_orders_atom`, before `board_atom`,
+  /// so the workers' cameras read them in the same tick as one process's); null for none.
+  std::shared_ptr<const operator_board> operators;
+  /// What the console shows of the workers' cameras, gathered with their picks, one worker's at
+  /// a time; null for none.
+  std::function<void(live_display)> display_gathered;
 };
 
 /// The actors of a run's crowd, to join to the clock.

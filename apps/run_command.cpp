@@ -16,11 +16,9 @@
 #include "apps/set_option.hpp"
 #include "apps/task_option.hpp"
 #include "apps/tls_options.hpp"
+#include "apps/workers_option.hpp"
 #include "config/scenario_error.hpp"
 #include "config/scenario_loader.hpp"
-#ifdef ARGUS_WITH_DISTRIBUTED
-#include "distributed/network_workers.hpp"
-#endif
 #include "eval/run_files.hpp"
 #include "fmt/format.h"
 #include "live/command_log.hpp"
@@ -41,8 +39,7 @@ struct run_arguments {
   bool no_feeds = false;
   std::vector<std::string> tasks;
   std::optional<std::string> commands;
-  std::optional<std::string> workers;
-  std::string on_worker_loss = "end-run";
+  workers_arguments workers;
   tls_arguments tls;
 };
 
@@ -105,23 +102,6 @@ void print_outcome(const run_arguments& args, const config::scenario& s,
     std::cout << "  worker lost, its cameras crashed: " << lost << '\n';
 }
 
-// `--workers HOST:PORT,...`: the pool a distributed run connects to; null for a run in this
-// process.
-std::shared_ptr<const actors::worker_pool> workers_of(const run_arguments& args) {
-  if (!args.workers) {
-    if (args.tls.given())
-      throw std::invalid_argument("--tls-cert, --tls-key and --tls-ca are for --workers");
-    return nullptr;
-  }
-#ifdef ARGUS_WITH_DISTRIBUTED
-  return std::make_shared<distributed::network_workers>(
-      distributed::parse_endpoints(*args.workers, "--workers"),
-      distributed::tls_files{args.tls.cert, args.tls.key, args.tls.ca});
-#else
-  throw std::invalid_argument("--workers: this build has no network layer (libcaf-io)");
-#endif
-}
-
 }  // namespace
 
 void add_run_command(CLI::App& app, int& result) {
@@ -144,14 +124,7 @@ void add_run_command(CLI::App& app, int& result) {
   cmd->add_option("--task", args->tasks,
                   "Add an operator task, e.g. 'at=10s,camera=7,pixel=160x120' (repeatable; keys "
                   "as in a scenario's tasks)");
-  cmd->add_option("--workers", args->workers,
-                  "Run the cameras and their links on these workers (argus worker), "
-                  "HOST:PORT,...; placement.policy says how (docs/distributed.md)");
-  cmd->add_option("--on-worker-loss", args->on_worker_loss,
-                  "What a worker lost mid-run does: end-run (the run ends with its last whole "
-                  "tick, exit 1) or crash-nodes (its cameras become crashed nodes and the run "
-                  "goes on); see docs/distributed.md")
-      ->check(CLI::IsMember({"end-run", "crash-nodes"}));
+  add_workers_options(cmd, args->workers);
   add_tls_options(cmd, args->tls, "coordinator", "worker");
   cmd->add_option("--commands", args->commands,
                   "Replay the operator's commands of a live run (DIR/commands.yaml of argus "
@@ -177,11 +150,7 @@ void add_run_command(CLI::App& app, int& result) {
     }
     actors::run_options options;
     try {
-      options.workers = workers_of(*args);
-      if (args->on_worker_loss == "crash-nodes") {
-        if (!options.workers) throw std::invalid_argument("--on-worker-loss is for --workers");
-        options.on_worker_loss = actors::worker_loss::crash_nodes;
-      }
+      apply_workers_options(args->workers, args->tls, /*tls_only_for_workers=*/true, options);
     } catch (const std::invalid_argument& e) {
       std::cerr << "argus run: " << e.what() << '\n';
       result = bad_input;

@@ -11,6 +11,7 @@
 #include "apps/set_option.hpp"
 #include "apps/task_option.hpp"
 #include "apps/tls_options.hpp"
+#include "apps/workers_option.hpp"
 #include "config/scenario_error.hpp"
 #include "config/whole_file.hpp"
 #include "distributed/loopback.hpp"
@@ -35,6 +36,7 @@ struct serve_arguments {
   int port = 8080;
   bool hold = false;
   tls_arguments tls;
+  workers_arguments workers;
 };
 
 // Blocks until SIGINT or SIGTERM (argus serve --hold, once the run is over).
@@ -75,6 +77,14 @@ int serve(const serve_arguments& args) {
     return bad_input;
   }
   apply_run_overrides(args.overrides, scenario);
+  actors::run_options options;
+  try {
+    // One TLS identity for the process: the console's HTTPS and the workers' connections.
+    apply_workers_options(args.workers, args.tls, /*tls_only_for_workers=*/false, options);
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "argus serve: " << e.what() << '\n';
+    return bad_input;
+  }
   // A live run is paced to the wall clock unless asked otherwise: it is there to be watched.
   const double speed = args.overrides.speed.value_or(1.0);
   try {
@@ -97,7 +107,6 @@ int serve(const serve_arguments& args) {
                              args.bind, server.port(),
                              settings.token.empty() ? "" : "?token=" + settings.token)
               << std::endl;
-    actors::run_options options;
     options.live = session;
     options.station = station;
     auto outcome = actors::run_scenario(scenario, options);
@@ -115,13 +124,19 @@ int serve(const serve_arguments& args) {
     std::cout << "  replay:   argus run " << (outcome.output_dir / "scenario.yaml").string()
               << " --commands " << (outcome.output_dir / "commands.yaml").string() << " --out DIR"
               << std::endl;
+    for (const auto& lost : r.lost_workers)
+      std::cout << "  worker lost, its cameras crashed: " << lost << '\n';
+    // A lost worker or a strategy that raised ended the run early: its files are whole up to
+    // that tick, and the page says it is over.
+    const int status = r.failure.empty() ? ok : run_failed;
+    if (!r.failure.empty()) std::cerr << "argus serve: " << r.failure << '\n';
     if (args.hold) {
       std::cout << "argus serve: the run is over; serving its last state until interrupted"
                 << std::endl;
       wait_for_interrupt();
     }
     server.stop();
-    return ok;
+    return status;
   } catch (const std::exception& e) {
     std::cerr << "argus serve: " << e.what() << '\n';
     return run_failed;
@@ -145,6 +160,17 @@ void add_serve_command(CLI::App& app, int& result) {
                   "Address to listen on (default 127.0.0.1: this machine only; beyond loopback "
                   "the console requires a client certificate (--tls-*) or the secret it prints)");
   add_tls_options(cmd, args->tls, "console", "browser");
+  add_workers_options(cmd, args->workers);
+  // One identity for the process: with --workers it also secures the connections to them.
+  cmd->get_option("--tls-cert")
+      ->description(
+          "This console's certificate (PEM); with --tls-key and --tls-ca the console is HTTPS "
+          "and asks browsers for a client certificate, and with --workers every connection to a "
+          "worker is TLS with mutual authentication too");
+  cmd->get_option("--tls-ca")
+      ->description(
+          "The CA certificate (PEM) that must sign every browser's (and worker's) "
+          "certificate");
   cmd->add_flag("--hold", args->hold,
                 "Keep serving after the run has ended, until interrupted (Ctrl-C)");
   cmd->callback([args, &result] { result = serve(*args); });

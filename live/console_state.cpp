@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cstdlib>
+#include <opencv2/imgcodecs.hpp>
 #include <type_traits>
 #include <variant>
 
@@ -52,17 +53,33 @@ void console_state::publish_snapshot(std::shared_ptr<const world::snapshot> fram
 void console_state::publish_camera(int camera, std::int64_t tick, double pan_deg, double tilt_deg,
                                    double field_of_view_deg, const cv::Mat& image,
                                    std::vector<cv::Rect2d> boxes) {
+  // Shares the node's buffer: the node never writes a sensed frame again.
+  put_camera(camera, tick, {pan_deg, tilt_deg, field_of_view_deg}, image, {}, std::move(boxes));
+}
+
+void console_state::publish_camera_jpeg(int camera, std::int64_t tick, double pan_deg,
+                                        double tilt_deg, double field_of_view_deg,
+                                        std::vector<unsigned char> jpeg,
+                                        std::vector<cv::Rect2d> boxes) {
+  put_camera(camera, tick, {pan_deg, tilt_deg, field_of_view_deg}, cv::Mat(), std::move(jpeg),
+             std::move(boxes));
+}
+
+void console_state::put_camera(int camera, std::int64_t tick, std::array<double, 3> pose,
+                               cv::Mat image, std::vector<unsigned char> jpeg,
+                               std::vector<cv::Rect2d> boxes) {
   std::lock_guard<std::mutex> guard(mutex_);
   auto it = cameras_.find(camera);
   if (it == cameras_.end()) return;
   auto& e = it->second;
-  e.pan_deg = pan_deg;
-  e.tilt_deg = tilt_deg;
-  e.field_of_view_deg = field_of_view_deg;
-  if (image.empty()) return;
+  e.pan_deg = pose[0];
+  e.tilt_deg = pose[1];
+  e.field_of_view_deg = pose[2];
+  if (image.empty() && jpeg.empty()) return;  // it looked at nothing: the last frame stays
   e.frame.tick = tick;
   ++e.frame.sequence;
-  e.frame.image = image;  // shares the node's buffer: the node never writes a sensed frame again
+  e.frame.image = std::move(image);
+  e.frame.jpeg = std::move(jpeg);
   e.frame.boxes = std::move(boxes);
 }
 
@@ -241,7 +258,7 @@ nlohmann::json console_state::state_json() const {
                        {"tracking", c.tracking},
                        {"task", group},
                        {"frame", c.frame.sequence},
-                       {"has_frame", !c.frame.image.empty()}});
+                       {"has_frame", !c.frame.image.empty() || !c.frame.jpeg.empty()}});
   }
   auto& groups = out["groups"] = nlohmann::json::array();
   for (const auto& [task, g] : groups_)
@@ -265,10 +282,19 @@ nlohmann::json console_state::state_json() const {
 }
 
 std::optional<feed_frame> console_state::feed(int camera) const {
-  std::lock_guard<std::mutex> guard(mutex_);
-  const auto it = cameras_.find(camera);
-  if (it == cameras_.end() || it->second.frame.image.empty()) return std::nullopt;
-  return it->second.frame;
+  feed_frame out;
+  {
+    std::lock_guard<std::mutex> guard(mutex_);
+    const auto it = cameras_.find(camera);
+    if (it == cameras_.end()) return std::nullopt;
+    const auto& frame = it->second.frame;
+    if (frame.image.empty() && frame.jpeg.empty()) return std::nullopt;
+    out = frame;
+  }
+  // A worker's frame, decoded out of the lock: the run publishes while a page reads.
+  if (out.image.empty()) out.image = cv::imdecode(out.jpeg, cv::IMREAD_COLOR);
+  if (out.image.empty()) return std::nullopt;
+  return out;
 }
 
 std::optional<camera_pose> console_state::pose(int camera) const {

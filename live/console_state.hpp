@@ -39,6 +39,9 @@ struct feed_frame {
   std::uint64_t sequence = 0;
   cv::Mat image;
   std::vector<cv::Rect2d> boxes;
+  /// The frame as JPEG, when it came so from a worker (`image` is then decoded from it by
+  /// `console_state::feed`, on the reader's thread).
+  std::vector<unsigned char> jpeg;
 };
 
 /// Where a camera points now, as the console knows it.
@@ -68,6 +71,12 @@ class console_state {
   void publish_camera(int camera, std::int64_t tick, double pan_deg, double tilt_deg,
                       double field_of_view_deg, const cv::Mat& image,
                       std::vector<cv::Rect2d> boxes);
+
+  /// The same for a camera on a worker (`argus serve --workers`): its frame as JPEG (empty when
+  /// it looked at nothing). It is decoded only when the page asks for it.
+  void publish_camera_jpeg(int camera, std::int64_t tick, double pan_deg, double tilt_deg,
+                           double field_of_view_deg, std::vector<unsigned char> jpeg,
+                           std::vector<cv::Rect2d> boxes);
 
   /// Counts network messages: `sent` put on links, `received` delivered to nodes.
   void add_traffic(std::uint64_t sent, std::uint64_t received) noexcept {
@@ -123,6 +132,10 @@ class console_state {
     std::deque<std::array<double, 2>> trail;
   };
 
+  // A camera's pose (pan, tilt, field of view) and, when it sensed one, its frame: `image`, or
+  // `jpeg` to be decoded when asked for.
+  void put_camera(int camera, std::int64_t tick, std::array<double, 3> pose, cv::Mat image,
+                  std::vector<unsigned char> jpeg, std::vector<cv::Rect2d> boxes);
   void apply(const event_line& ev);
   // What each kind changes in the tables; the others change nothing.
   void take(const events::node_state& e, const event_line& ev);

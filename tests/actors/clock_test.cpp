@@ -293,6 +293,32 @@ CAF_TEST(a lost worker ends the run with the last whole tick naming the worker) 
   CAF_CHECK(result.lost_workers.empty());
 }
 
+CAF_TEST(a worker that is shut down mid run is a lost worker and says so) {
+  // argus worker stopped with SIGTERM or Ctrl-C ends what it hosts with user_shutdown; one of
+  // its links going that way must not read as a relay that broke the network.
+  auto clock = make_clock(5);
+  add_probe(clock, info(1, "crowd", phase::world));
+  auto remote = info(participant_ids::link(3), "link/2-7", phase::network, wake_mode::never);
+  remote.host = "10.0.0.2:4242";
+  auto link = sys.spawn(silent, "x");
+  self->send(clock, join_atom_v, link, remote);
+  auto camera_there = info(participant_ids::camera(7), "camera/7", phase::cameras);
+  camera_there.host = remote.host;
+  self->send(clock, join_atom_v, sys.spawn(silent, "x"), camera_there);  // stuck in tick 0
+  self->send(clock, start_atom_v);
+  sched.run();
+  caf::anon_send_exit(link, caf::exit_reason::user_shutdown);
+  run();
+  run_result result;
+  self->receive([&](run_result& r) { result = std::move(r); },
+                [&](caf::error& err) { CAF_FAIL("the run failed as a broken network: " << err); },
+                caf::after(std::chrono::seconds(0)) >> [] { CAF_FAIL("the run stalled"); });
+  CAF_CHECK_NOT_EQUAL(
+      result.failure.find(
+          "worker 10.0.0.2:4242 was lost during tick 0 (link/2-7 ended: the worker was shut down)"),
+      std::string::npos);
+}
+
 // The fault injector's stand-in under --on-worker-loss crash-nodes: it records the losses it
 // hears of, and the ticks it gets.
 caf::behavior loss_listener(caf::event_based_actor* self, std::shared_ptr<probe_log> log,

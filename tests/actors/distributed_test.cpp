@@ -23,6 +23,7 @@
 #include "actors/worker_pool.hpp"
 #include "config/scenario_loader.hpp"
 #include "config/scenario_writer.hpp"
+#include "live/session.hpp"
 #include "tests/actors/file_text.hpp"
 #include "world/layout_loader.hpp"
 
@@ -234,6 +235,63 @@ TEST(distributed, two_workers_record_the_video_one_process_records) {
   EXPECT_TRUE(file_text(here_dir / "video" / "feeds.avi") == alone)
       << "the video rendered on the coordinator differs from one process's";
   for (const auto& d : {alone_dir, dir, here_dir}) std::filesystem::remove_all(d);
+}
+
+// A live run (argus serve) of replay_faults.yaml's first 14 s, alone or on `workers`, with an
+// operator's click on camera 7 and a crash of camera 3 queued before its first tick (so any run
+// takes them at tick 0); returns its session.
+std::shared_ptr<live::session> live_run(const std::filesystem::path& dir,
+                                        std::shared_ptr<const worker_pool> workers) {
+  auto s = replay_faults(dir);
+  s.run.duration = config::seconds{14.0};
+  auto session = std::make_shared<live::session>(s, 0.0);
+  live::command click;
+  click.kind = live::command_kind::task;
+  click.camera = 7;
+  click.pixel = {80.0, 70.0};
+  click.cameras_wanted = 2;
+  live::command crash;
+  crash.kind = live::command_kind::crash;
+  crash.camera = 3;
+  EXPECT_TRUE(session->queue.push(click) && session->queue.push(crash));
+  run_options options;
+  options.live = session;
+  options.workers = std::move(workers);
+  auto outcome = run_scenario(s, options);
+  EXPECT_TRUE(outcome.result.failure.empty()) << outcome.result.failure;
+  return session;
+}
+
+TEST(distributed, a_live_run_on_workers_takes_the_operators_orders_as_one_process_does) {
+  // The orders go out to the workers' cameras with the world's snapshot; their poses and traffic
+  // come back to the console with the gathers.
+  const auto alone_dir = scratch("live-alone");
+  const auto alone = live_run(alone_dir, nullptr);
+  const auto events = file_text(alone_dir / "events.jsonl");
+  ASSERT_NE(events.find("\"kind\":\"task_issued\",\"task\":2,\"by\":\"pixel\""), std::string::npos);
+  // The click resolved on camera 7 (to someone or no one), in its node's turn.
+  ASSERT_NE(events.find("\"task\":2,"), events.rfind("\"task\":2,"));
+  const auto dir = scratch("live-two");
+  const auto shared = live_run(dir, std::make_shared<local_workers>(2));
+  EXPECT_EQ(outputs(dir), outputs(alone_dir));
+  EXPECT_EQ(alone->log.commands(), shared->log.commands());
+  // What the page shows: the workers' traffic, and the poses their cameras turned to (camera 7
+  // zooms on its target), one tick behind one process's (they come with the next gather).
+  const auto shown = shared->console.state_json();
+  EXPECT_GT(shown["messages"]["sent"].get<std::uint64_t>(), 0u);
+  EXPECT_GT(shown["messages"]["received"].get<std::uint64_t>(), 0u);
+  const auto s = replay_faults(dir);
+  int turned = 0;
+  for (const auto& c : s.cameras) {
+    const auto pose = shared->console.pose(c.id);
+    ASSERT_TRUE(pose.has_value());
+    if (pose->pan_deg != c.pan_deg || pose->tilt_deg != c.tilt_deg ||
+        pose->field_of_view_deg != c.field_of_view_deg)
+      ++turned;
+  }
+  EXPECT_GT(turned, 0) << "no camera's pose on the workers reached the console";
+  std::filesystem::remove_all(alone_dir);
+  std::filesystem::remove_all(dir);
 }
 
 // penn_station_emulated.yaml (2 minutes unless told), with two local workers of which the second is

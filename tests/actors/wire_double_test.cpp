@@ -9,6 +9,7 @@
 #include <limits>
 #include <vector>
 
+#include "actors/wire_live.hpp"
 #include "actors/wire_log.hpp"
 #include "actors/wire_partition.hpp"
 #include "caf/binary_deserializer.hpp"
@@ -95,6 +96,34 @@ TEST(wire_double, a_whole_pedestrian_crosses_and_draws_what_it_would_have_drawn)
   EXPECT_EQ(q.entry_stairs, -1);
   EXPECT_EQ(q.flow_exit, 4);
   for (int k = 0; k < 5; ++k) EXPECT_EQ(q.random.next(), p.random.next());
+}
+
+TEST(wire_double, an_operator_order_crosses_whole) {
+  // A live run's orders go out to the workers' cameras (argus serve --workers).
+  operator_order order;
+  order.tick = 321;
+  order.camera = 7;
+  order.task = 4;
+  order.request.at = config::seconds{321.0 / 15.0};
+  order.request.camera = 7;
+  order.request.by = config::task_target::pixel;
+  order.request.pixel = {-0.0, 119.5};
+  order.request.cameras_wanted = 2;
+  order.request.max_cameras = 3;
+  order.request.cancel_at = config::seconds{0.1 + 0.2};
+  auto back = crossed(order);
+  EXPECT_TRUE(back.request == order.request);
+  EXPECT_TRUE(std::signbit(back.request.pixel.x_px));
+  EXPECT_EQ(back.tick, 321);
+  EXPECT_EQ(back.task, 4u);
+  EXPECT_FALSE(back.cancel);
+  order.cancel = true;
+  order.request.cancel_at.reset();
+  order.request.by = config::task_target::first_to_enter;
+  back = crossed(order);
+  EXPECT_TRUE(back.cancel);
+  EXPECT_FALSE(back.request.cancel_at.has_value());
+  EXPECT_EQ(back.request.by, config::task_target::first_to_enter);
 }
 
 }  // namespace

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <opencv2/imgcodecs.hpp>
+
 namespace argus::live {
 namespace {
 
@@ -76,6 +78,30 @@ TEST(console_state, feeds_only_what_a_node_sensed) {
   EXPECT_EQ(frame->boxes.size(), 1u);
   EXPECT_FALSE(console.feed(9));
   EXPECT_FALSE(console.pose(9));
+}
+
+TEST(console_state, a_workers_frame_arrives_as_jpeg_and_is_decoded_when_asked_for) {
+  // argus serve --workers: a camera's frame crosses as JPEG and keeps its tick and boxes.
+  console_state console(three_cameras());
+  const cv::Mat sensed(24, 32, CV_8UC3, cv::Scalar(40, 90, 200));
+  std::vector<unsigned char> jpeg;
+  ASSERT_TRUE(cv::imencode(".jpg", sensed, jpeg));
+  console.publish_camera_jpeg(2, 7, 12.0, -15.0, 30.0, jpeg, {cv::Rect2d(2, 3, 4, 5)});
+  EXPECT_EQ(camera(console.state_json(), 2)["has_frame"], true);
+  auto frame = console.feed(2);
+  ASSERT_TRUE(frame);
+  EXPECT_EQ(frame->tick, 7);
+  ASSERT_EQ(frame->image.size(), sensed.size());
+  EXPECT_LT(cv::norm(frame->image, sensed, cv::NORM_INF), 8.0);  // JPEG's loss only
+  ASSERT_EQ(frame->boxes.size(), 1u);
+  EXPECT_EQ(frame->boxes[0], cv::Rect2d(2, 3, 4, 5));
+  // A later turn that looked at nothing moves the camera and keeps its last frame.
+  console.publish_camera_jpeg(2, 8, 13.0, -15.0, 30.0, {}, {});
+  EXPECT_DOUBLE_EQ(console.pose(2)->pan_deg, 13.0);
+  EXPECT_EQ(console.feed(2)->tick, 7);
+  // Bytes that are no JPEG show no frame rather than a broken one.
+  console.publish_camera_jpeg(3, 9, 0.0, 0.0, 30.0, {1, 2, 3}, {});
+  EXPECT_FALSE(console.feed(3));
 }
 
 }  // namespace

@@ -12,10 +12,13 @@ import sys
 from serve_session import Serve
 
 
-def main(argus, scenario, out):
+def main(argus, scenario, out, *serve_options, while_tasked=None):
+    """The scripted live run and its replay; `serve_options` go to `argus serve`, and
+    `while_tasked(serve, camera)`, when given, runs once the clicked task is issued."""
     shutil.rmtree(out, ignore_errors=True)
     live = os.path.join(out, "live")
-    serve = Serve(argus, scenario, live, "--speed", "2", "--duration", "16s", "--threads", "2")
+    serve = Serve(argus, scenario, live, "--speed", "2", "--duration", "16s", "--threads", "2",
+                  *serve_options)
     try:
         serve.wait_tick(20)
         camera, x, y = serve.pause_on_someone()
@@ -27,6 +30,8 @@ def main(argus, scenario, out):
         serve.pace(paused=False)
         tick = serve.state()["tick"]
         task = serve.new_task(known)
+        if while_tasked:
+            while_tasked(serve, camera)
         serve.wait_tick(tick + 30)
         assert serve.command(command="cancel", task=task)[0] == 202
         assert serve.command(command="cancel", task=7)[0] == 202  # refused at its tick
