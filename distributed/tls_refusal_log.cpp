@@ -32,25 +32,57 @@ accept_function openssl_accept() {
   return real;
 }
 
-std::string peer_of(const SSL* ssl) {
-  const int fd = SSL_get_fd(ssl);
+// The peer's address, read before the handshake step: once the peer has refused and reset the
+// connection, getpeername() fails (ENOTCONN), and the refusal could not say whom it refused.
+struct peer_address {
   sockaddr_storage addr{};
-  socklen_t len = sizeof(addr);
-  if (fd < 0 || getpeername(fd, reinterpret_cast<sockaddr*>(&addr), &len) != 0)
-    return "an unknown peer";
-  char host[INET6_ADDRSTRLEN] = {};
-  unsigned port = 0;
-  if (addr.ss_family == AF_INET) {
-    const auto* in = reinterpret_cast<const sockaddr_in*>(&addr);
-    inet_ntop(AF_INET, &in->sin_addr, host, sizeof(host));
-    port = ntohs(in->sin_port);
-    return std::string(host) + ":" + std::to_string(port);
+  bool known = false;
+};
+
+peer_address address_of(const SSL* ssl) {
+  peer_address out;
+  const int fd = SSL_get_fd(ssl);
+  socklen_t len = sizeof(out.addr);
+  out.known = fd >= 0 && getpeername(fd, reinterpret_cast<sockaddr*>(&out.addr), &len) == 0;
+  return out;
+}
+
+// The connection's address as first read, kept with the connection (freed with it): a handshake
+// takes several calls, and by a later one the peer may already have refused and gone.
+void free_peer(void*, void* kept, CRYPTO_EX_DATA*, int, long, void*) {
+  delete static_cast<peer_address*>(kept);
+}
+
+int peer_index() {
+  static const int index = SSL_get_ex_new_index(0, nullptr, nullptr, nullptr, free_peer);
+  return index;
+}
+
+peer_address remembered_peer(SSL* ssl) {
+  const auto fresh = address_of(ssl);
+  auto* kept = static_cast<peer_address*>(SSL_get_ex_data(ssl, peer_index()));
+  if (!fresh.known) return kept != nullptr ? *kept : fresh;
+  if (kept == nullptr) {
+    kept = new peer_address(fresh);
+    if (SSL_set_ex_data(ssl, peer_index(), kept) != 1) delete kept;
+  } else {
+    *kept = fresh;
   }
-  if (addr.ss_family == AF_INET6) {
-    const auto* in = reinterpret_cast<const sockaddr_in6*>(&addr);
+  return fresh;
+}
+
+std::string to_string(const peer_address& peer) {
+  if (!peer.known) return "an unknown peer";
+  char host[INET6_ADDRSTRLEN] = {};
+  if (peer.addr.ss_family == AF_INET) {
+    const auto* in = reinterpret_cast<const sockaddr_in*>(&peer.addr);
+    inet_ntop(AF_INET, &in->sin_addr, host, sizeof(host));
+    return std::string(host) + ":" + std::to_string(ntohs(in->sin_port));
+  }
+  if (peer.addr.ss_family == AF_INET6) {
+    const auto* in = reinterpret_cast<const sockaddr_in6*>(&peer.addr);
     inet_ntop(AF_INET6, &in->sin6_addr, host, sizeof(host));
-    port = ntohs(in->sin6_port);
-    return "[" + std::string(host) + "]:" + std::to_string(port);
+    return "[" + std::string(host) + "]:" + std::to_string(ntohs(in->sin6_port));
   }
   return "a peer of another address family";
 }
@@ -86,10 +118,11 @@ std::string reason_of(const SSL* ssl, int error) {
 extern "C" int SSL_accept(SSL* ssl) {
   const auto real = openssl_accept();
   if (real == nullptr) return -1;  // no OpenSSL loaded: nothing can have called here
+  const auto peer = remembered_peer(ssl);
   const int result = real(ssl);
   if (result == 1) return result;
   const int error = SSL_get_error(ssl, result);
   if (error == SSL_ERROR_WANT_READ || error == SSL_ERROR_WANT_WRITE) return result;
-  spdlog::warn("refused a TLS connection from {}: {}", peer_of(ssl), reason_of(ssl, error));
+  spdlog::warn("refused a TLS connection from {}: {}", to_string(peer), reason_of(ssl, error));
   return result;
 }
