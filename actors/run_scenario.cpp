@@ -399,6 +399,7 @@ run_outcome run_scenario(const config::scenario& scenario, const run_options& op
   auto evaluated = scenario;
   if (live) live::apply_commands(evaluated, live->log.commands());
   evaluate_run(evaluated, *station, log->take(), end_tick, options, outcome);
+  outcome.station = station;
   return outcome;
 }
 

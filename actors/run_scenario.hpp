@@ -19,6 +19,9 @@ struct run_outcome {
   std::filesystem::path output_dir;
   /// The run measured against ground truth (also in metrics.json).
   eval::evaluation evaluation;
+  /// The station the run ran in, with its distance fields: the reports draw and walk the crowd
+  /// in it rather than load it again.
+  std::shared_ptr<const world::station> station;
 };
 
 /// How `argus run` runs a scenario, beyond the scenario itself.

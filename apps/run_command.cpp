@@ -162,7 +162,8 @@ void add_run_command(CLI::App& app, int& result) {
     try {
       options.show_progress = !args->no_progress && isatty(STDERR_FILENO) != 0;
       auto outcome = actors::run_scenario(scenario, options);
-      const auto report = record_run(scenario, outcome.output_dir, !args->no_feeds);
+      const auto report =
+          record_run(scenario, outcome.output_dir, !args->no_feeds, outcome.station);
       print_outcome(*args, scenario, outcome, report);
       result = ok;
       // A strategy that raised ended the run early: its outputs are complete up to that tick.

@@ -26,14 +26,15 @@ config::scenario with_absolute_paths(config::scenario s) {
 }  // namespace
 
 std::optional<std::filesystem::path> record_run(const config::scenario& scenario,
-                                                const std::filesystem::path& output_dir,
-                                                bool feeds) {
+                                                const std::filesystem::path& output_dir, bool feeds,
+                                                std::shared_ptr<const world::station> station) {
   try {
     const auto copy = with_absolute_paths(scenario);
     report::write_file(output_dir / "scenario.yaml", config::to_yaml(copy));
     if (!feeds) std::filesystem::remove_all(output_dir / "feeds");
     report::report_options options;
     options.feeds = feeds;
+    options.station = std::move(station);
     const auto outcome = report::build_reports(output_dir, &copy, options);
     // The key frames a user would look for and does not find are said; a run with no key event
     // simply has none.

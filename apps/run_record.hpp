@@ -1,9 +1,11 @@
 #pragma once
 
 #include <filesystem>
+#include <memory>
 #include <optional>
 
 #include "config/scenario.hpp"
+#include "world/station.hpp"
 
 namespace argus::apps {
 
@@ -15,8 +17,10 @@ namespace argus::apps {
 /// the feeds are left out for a reason other than having no key event, stderr says why).
 /// Returns report.html's path, or nothing when the reports could not be written (said on
 /// stderr: a run that finished is not failed by its pictures).
-std::optional<std::filesystem::path> record_run(const config::scenario& scenario,
-                                                const std::filesystem::path& output_dir,
-                                                bool feeds = true);
+/// `station` is the scenario's, when the caller has it (the run's, `run_outcome::station`); null:
+/// the reports load it.
+std::optional<std::filesystem::path> record_run(
+    const config::scenario& scenario, const std::filesystem::path& output_dir, bool feeds = true,
+    std::shared_ptr<const world::station> station = nullptr);
 
 }  // namespace argus::apps

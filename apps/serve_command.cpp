@@ -114,7 +114,7 @@ int serve(const serve_arguments& args) {
     config::write_whole_file(outcome.output_dir / "commands.yaml", [&](std::ostream& out) {
       out << live::commands_yaml(commands, scenario);
     });
-    record_run(scenario, outcome.output_dir);
+    record_run(scenario, outcome.output_dir, /*feeds=*/true, outcome.station);
     const auto& r = outcome.result;
     std::cout << fmt::format(
         "{}: {} ticks, {:.1f} s simulated in {:.2f} s wall, {} events, {} operator commands\n",

@@ -52,7 +52,8 @@ class report_builder {
 
   // The run's scenario and station, for the plan and the feeds; what is missing is said once
   // for each of them.
-  void load_scenario(const config::scenario* given, bool feeds) {
+  void load_scenario(const config::scenario* given, const report_options& options) {
+    const bool feeds = options.feeds;
     const auto leave_out = [&](const std::string& why) {
       outcome_.left_out.push_back(fmt::format("plan.png ({})", why));
       if (feeds) outcome_.left_out.push_back(fmt::format("feeds/ ({})", why));
@@ -76,7 +77,8 @@ class report_builder {
       // are in the field cache it has just filled, and read back instead of computed again.
       world::navigation_settings settings;
       settings.field_cache = world::field_cache::default_dir_or_none();
-      station_ = world::station::load(world::layout_path(*given), settings);
+      station_ = options.station ? options.station
+                                 : world::station::load(world::layout_path(*given), settings);
     } catch (const std::exception& e) {
       leave_out(fmt::format("station layout: {}", e.what()));
       return;
@@ -153,7 +155,7 @@ report_outcome build_reports(const std::filesystem::path& dir, const config::sce
   const auto summary = read_json(dir / "summary.json");
   const auto events = event_log::read(dir / "events.jsonl");
   report_builder builder(dir);
-  builder.load_scenario(scenario, options.feeds);
+  builder.load_scenario(scenario, options);
   builder.plan();
   builder.timeline(events, run_length_s(metrics, summary));
   if (options.feeds) builder.feeds(events);

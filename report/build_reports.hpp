@@ -1,10 +1,12 @@
 #pragma once
 
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "config/scenario.hpp"
+#include "world/station.hpp"
 
 namespace argus::report {
 
@@ -19,6 +21,10 @@ struct report_options {
   /// Draw `feeds/` (the cameras' frames at the key events and their contact sheet): it renders,
   /// which the other reports do not, so runs that need no pictures of it (sweeps) leave it out.
   bool feeds = true;
+  /// The scenario's station, when the caller has it loaded (argus run, after the run): it is
+  /// used as it is, not loaded again. Null: loaded from the scenario's layout (its distance
+  /// fields from the field cache when a run has just kept them there).
+  std::shared_ptr<const world::station> station;
 };
 
 /// (Re)builds a run's reports in its output folder `dir` from the files the run left there

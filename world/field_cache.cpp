@@ -55,13 +55,6 @@ std::array<unsigned char, 32> finish(EVP_MD_CTX* context) {
   return digest;
 }
 
-// A checksum of the fields as they lie in the file.
-std::array<unsigned char, 32> checksum_of(const std::vector<std::vector<float>>& fields) {
-  EVP_MD_CTX* context = new_sha256();
-  for (const auto& f : fields) EVP_DigestUpdate(context, f.data(), f.size() * sizeof(float));
-  return finish(context);
-}
-
 bool key_fits(const std::string& key) {
   return key.size() == key_chars &&
          std::all_of(key.begin(), key.end(), [](char c) { return std::isxdigit(c) != 0; });
@@ -135,18 +128,25 @@ std::string field_cache::store(const std::string& key,
   for (const auto& f : fields)
     if (f.size() != header.cells) return "fields of different sizes cannot be stored";
   std::copy(key.begin(), key.end(), header.key.begin());
-  header.checksum = checksum_of(fields);
   // Aside first, under a name no other process or thread uses, then renamed into place.
   const auto stamp = std::chrono::steady_clock::now().time_since_epoch().count();
   const auto aside =
       dir_ / fmt::format("{}.tmp.{}.{}.{}", key, ::getpid(),
                          std::hash<std::thread::id>{}(std::this_thread::get_id()), stamp);
   {
+    // One pass over the fields: each is hashed as it is written, and the header, written first
+    // without its checksum, is written again with it.
+    EVP_MD_CTX* context = new_sha256();  // before the file: when it throws, none is left
     std::ofstream out(aside, std::ios::binary | std::ios::trunc);
     out.write(reinterpret_cast<const char*>(&header), sizeof header);
-    for (const auto& f : fields)
-      out.write(reinterpret_cast<const char*>(f.data()),
-                static_cast<std::streamsize>(f.size() * sizeof(float)));
+    for (const auto& f : fields) {
+      const auto bytes = f.size() * sizeof(float);
+      out.write(reinterpret_cast<const char*>(f.data()), static_cast<std::streamsize>(bytes));
+      EVP_DigestUpdate(context, f.data(), bytes);
+    }
+    header.checksum = finish(context);
+    out.seekp(0);
+    out.write(reinterpret_cast<const char*>(&header), sizeof header);
     out.flush();
     if (!out) {
       fs::remove(aside, error);
