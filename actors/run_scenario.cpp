@@ -144,6 +144,16 @@ void share_first_snapshot(caf::actor_system& system, const std::vector<worker_co
 
 }  // namespace
 
+std::shared_ptr<const world::station> load_run_station(const config::scenario& scenario) {
+  world::navigation_settings navigation;
+  navigation.threads = scenario.run.threads;  // 0 for one per core, as the run's scheduler
+  navigation.field_cache = world::field_cache::default_dir_or_none();
+  auto station = world::station::load(world::layout_path(scenario), navigation);
+  if (const auto& problem = station->field_cache_problem(); !problem.empty())
+    spdlog::warn("the distance fields were computed but not kept for the next run: {}", problem);
+  return station;
+}
+
 run_outcome run_scenario(const config::scenario& scenario, bool show_progress) {
   run_options options;
   options.show_progress = show_progress;
@@ -176,14 +186,7 @@ run_outcome run_scenario(const config::scenario& scenario, const run_options& op
   const auto end_tick = config::to_ticks(scenario.run.duration, scenario.run.tick);
   caf::actor video_participant;
   world_run_settings world_settings;
-  world::navigation_settings navigation;
-  navigation.threads = static_cast<unsigned>(threads);
-  navigation.field_cache = world::field_cache::default_dir_or_none();
-  world_settings.station = options.station
-                               ? options.station
-                               : world::station::load(world::layout_path(scenario), navigation);
-  if (const auto& problem = world_settings.station->field_cache_problem(); !problem.empty())
-    spdlog::warn("the distance fields were computed but not kept for the next run: {}", problem);
+  world_settings.station = options.station ? options.station : load_run_station(scenario);
   // Kept for the evaluation: world_settings goes to the world actors.
   const auto station = world_settings.station;
   render_pool pool;

@@ -60,6 +60,11 @@ struct run_options {
 /// for `--video`). With `options.video`, also spawns a render pool and the video recorder.
 run_outcome run_scenario(const config::scenario& scenario, const run_options& options);
 
+/// The station of `scenario`'s layout as a run loads it: its distance fields from the field cache
+/// when a run has kept them there (and kept there when computed), on `run.threads` threads.
+/// Throws as world::station::load does.
+std::shared_ptr<const world::station> load_run_station(const config::scenario& scenario);
+
 /// The same without video.
 run_outcome run_scenario(const config::scenario& scenario, bool show_progress);
 

@@ -89,7 +89,8 @@ int serve(const serve_arguments& args) {
   const double speed = args.overrides.speed.value_or(1.0);
   try {
     auto session = std::make_shared<live::session>(scenario, speed);
-    auto station = world::station::load(world::layout_path(scenario));
+    // As argus run loads it: a large station's fields come from the field cache.
+    auto station = actors::load_run_station(scenario);
     serve::console_server server(scenario, station, session);
     serve::server_settings settings;
     settings.bind = args.bind;
