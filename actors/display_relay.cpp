@@ -33,9 +33,7 @@ void display_relay::turn_done(int camera, std::int64_t tick, const vision::ptz_s
   camera_display shown;
   shown.camera = camera;
   shown.tick = tick;
-  shown.pan_deg = pose.pan_deg;
-  shown.tilt_deg = pose.tilt_deg;
-  shown.field_of_view_deg = pose.field_of_view_deg;
+  shown.pose = pose;
   if (!image.empty()) {
     cv::imencode(".jpg", image, shown.jpeg, {cv::IMWRITE_JPEG_QUALITY, display_jpeg_quality});
     for (const auto& look : looks)
@@ -48,9 +46,7 @@ void display_relay::turn_done(int camera, std::int64_t tick, const vision::ptz_s
   // A camera that looked at nothing in a later turn than the kept one's still shows that frame
   // (of its own tick), as in one process.
   if (shown.jpeg.empty() && !kept.jpeg.empty()) {
-    kept.pan_deg = shown.pan_deg;
-    kept.tilt_deg = shown.tilt_deg;
-    kept.field_of_view_deg = shown.field_of_view_deg;
+    kept.pose = shown.pose;
     return;
   }
   kept = std::move(shown);

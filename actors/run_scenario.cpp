@@ -93,8 +93,8 @@ void show_on_console(live::console_state& console, live_display shown) {
     std::vector<cv::Rect2d> boxes;
     for (std::size_t i = 0; i + 3 < c.boxes.size(); i += 4)
       boxes.emplace_back(c.boxes[i], c.boxes[i + 1], c.boxes[i + 2], c.boxes[i + 3]);
-    console.publish_camera_jpeg(c.camera, c.tick, c.pan_deg, c.tilt_deg, c.field_of_view_deg,
-                                std::move(c.jpeg), std::move(boxes));
+    console.publish_camera_jpeg(c.camera, c.tick, c.pose.pan_deg, c.pose.tilt_deg,
+                                c.pose.field_of_view_deg, std::move(c.jpeg), std::move(boxes));
   }
 }
 

@@ -11,7 +11,9 @@
 
 #include "actors/operator_board.hpp"
 #include "actors/wire_double.hpp"
+#include "actors/wire_log.hpp"
 #include "config/scenario.hpp"
+#include "vision/ptz_camera.hpp"
 
 namespace argus::config {
 
@@ -54,9 +56,7 @@ struct camera_display {
   int camera = 0;
   /// The tick of the frame (of the turn, when there is none).
   std::int64_t tick = 0;
-  double pan_deg = 0.0;
-  double tilt_deg = 0.0;
-  double field_of_view_deg = 0.0;
+  vision::ptz_state pose;
   std::vector<std::uint8_t> jpeg;
   /// x, y, width, height of each box, one after the other.
   std::vector<double> boxes;
@@ -64,7 +64,7 @@ struct camera_display {
 
 template <class Inspector>
 typename Inspector::result_type inspect(Inspector& f, camera_display& x) {
-  return f(x.camera, x.tick, x.pan_deg, x.tilt_deg, x.field_of_view_deg, x.jpeg, x.boxes);
+  return f(x.camera, x.tick, x.pose, x.jpeg, x.boxes);
 }
 
 /// A worker's cameras as the console shows them, since it was last asked: each camera's latest
