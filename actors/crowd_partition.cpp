@@ -2,6 +2,7 @@
 
 #include "actors/ordered_inbox.hpp"
 #include "actors/participant_ids.hpp"
+#include "actors/partition_shadow.hpp"
 #include "actors/tick_context.hpp"
 #include "actors/type_ids.hpp"
 #include "fmt/format.h"
@@ -53,12 +54,16 @@ void step_and_report(partition_actor* self, tick_context& ctx, const world::snap
     report.kept = subset_between(previous, result.pedestrians);
     report.handed_over = std::move(result.handed_over);
     report.events = std::move(result.events);
+    if (st.setup.checkpoints && is_checkpoint_tick(stamp.tick, st.setup.index)) {
+      report.checkpoint = true;
+      report.whole = result.pedestrians;
+    }
     st.setup.pedestrians = std::move(result.pedestrians);
     self->send(st.coordinator, world_report_atom_v, stamp, std::move(report));
   } else {
     st.setup.pedestrians.clear();
     self->send(st.coordinator, world_report_atom_v, stamp,
-               partition_report{st.setup.index, std::move(result), std::nullopt});
+               partition_report{st.setup.index, std::move(result), std::nullopt, std::nullopt});
   }
   ctx.sent_mail_to(participant_ids::world_coordinator);
 }

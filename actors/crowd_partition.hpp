@@ -31,6 +31,9 @@ struct crowd_partition_setup {
   /// where the partition reads each tick's snapshot (`initial` is then null). Such a partition
   /// keeps its own pedestrians, reports `partition_states` and is sent `partition_arrivals`.
   std::shared_ptr<snapshot_board> board;
+  /// On a worker under `--on-worker-loss crash-nodes`: it sends its pedestrians whole at its
+  /// checkpoint ticks (actors/partition_shadow.hpp).
+  bool checkpoints = false;
 };
 
 /// Spawns the actor of one crowd partition (docs/world.md, "Stepping, partitions, spawning").

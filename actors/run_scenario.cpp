@@ -337,7 +337,7 @@ run_outcome run_scenario(const config::scenario& scenario, const run_options& op
   // Which worker steps each crowd partition (none: here).
   std::vector<bool> steps_crowd(workers.size(), false);
   if (!workers.empty()) {
-    const auto partitions = place_partitions(scenario, workers.size(), options.on_worker_loss);
+    const auto partitions = place_partitions(scenario, workers.size());
     for (const auto& w : partitions) {
       world_settings.partition_hosts.push_back(
           w ? partition_host{workers[*w].host, workers[*w].name} : partition_host{});

@@ -24,11 +24,15 @@ struct partition_placement {
   double min_x_m = 0.0;
   double max_x_m = 0.0;
   std::vector<world::pedestrian> pedestrians;
+  /// Under `--on-worker-loss crash-nodes`: it sends its pedestrians whole every
+  /// `partition_checkpoint_ticks` (actors/partition_shadow.hpp), so the coordinator can step it
+  /// on if the worker is lost.
+  bool checkpoints = false;
 };
 
 template <class Inspector>
 typename Inspector::result_type inspect(Inspector& f, partition_placement& x) {
-  return f(x.index, as_bits(x.min_x_m), as_bits(x.max_x_m), x.pedestrians);
+  return f(x.index, as_bits(x.min_x_m), as_bits(x.max_x_m), x.pedestrians, x.checkpoints);
 }
 
 /// What the coordinator sends a partition on a worker after each tick: the pedestrians handed
@@ -51,11 +55,15 @@ struct partition_states {
   subset_delta kept;
   std::vector<world::pedestrian> handed_over;
   std::vector<world::event> events;
+  /// A checkpoint (`partition_placement::checkpoints`): `whole` holds the pedestrians it kept,
+  /// minds and generators included, in the order it steps them.
+  bool checkpoint = false;
+  std::vector<world::pedestrian> whole;
 };
 
 template <class Inspector>
 typename Inspector::result_type inspect(Inspector& f, partition_states& x) {
-  return f(x.index, x.kept, x.handed_over, x.events);
+  return f(x.index, x.kept, x.handed_over, x.events, x.checkpoint, x.whole);
 }
 
 }  // namespace argus::actors

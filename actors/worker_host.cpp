@@ -293,6 +293,7 @@ caf::result<caf::actor> spawn_partition(host_actor* self, partition_placement& p
   setup.behaviour = world::crowd_settings::from(st.run->scenario).behaviour;
   setup.pedestrians = std::move(placed.pedestrians);
   setup.board = st.run->world->board;
+  setup.checkpoints = placed.checkpoints;
   spdlog::info("worker {}: stepping crowd partition {} ({} pedestrians at the start)", st.name,
                placed.index, setup.pedestrians.size());
   auto partition = spawn_crowd_partition(self->system(), std::move(setup));

@@ -48,12 +48,10 @@ std::map<int, std::size_t> place_cameras(const config::scenario& scenario, std::
 }
 
 std::vector<std::optional<std::size_t>> place_partitions(const config::scenario& scenario,
-                                                         std::size_t workers, worker_loss on_loss) {
+                                                         std::size_t workers) {
   const std::size_t count = std::max(1u, scenario.world.partitions);
   std::vector<std::optional<std::size_t>> out(count);
-  if (workers == 0 || scenario.placement.crowd == config::crowd_placement::coordinator ||
-      on_loss == worker_loss::crash_nodes)
-    return out;
+  if (workers == 0 || scenario.placement.crowd == config::crowd_placement::coordinator) return out;
   for (std::size_t i = 0; i < count; ++i) out[i] = i * workers / count;
   return out;
 }

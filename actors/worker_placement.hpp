@@ -21,10 +21,10 @@ std::map<int, std::size_t> place_cameras(const config::scenario& scenario, std::
 /// to east), none for the coordinator: with `placement.crowd: workers`, consecutive strips in
 /// blocks, worker w taking partitions i with i * workers / partitions == w (fewer partitions
 /// than workers leave the last workers without); all on the coordinator with
-/// `placement.crowd: coordinator`, or when the run survives lost workers (a lost partition
-/// would take its pedestrians with it).
+/// `placement.crowd: coordinator`. Under `--on-worker-loss crash-nodes` the coordinator steps a
+/// lost worker's partitions on from their checkpoints (actors/partition_shadow.hpp).
 std::vector<std::optional<std::size_t>> place_partitions(const config::scenario& scenario,
-                                                         std::size_t workers, worker_loss on_loss);
+                                                         std::size_t workers);
 
 /// Which worker hosts the link between cameras `a` and `b`: camera `a`'s, or none (the
 /// coordinator) when the run survives lost workers and `b` is on another worker. A link must

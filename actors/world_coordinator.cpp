@@ -11,6 +11,7 @@
 #include "actors/crowd_partition.hpp"
 #include "actors/ordered_inbox.hpp"
 #include "actors/participant_ids.hpp"
+#include "actors/partition_shadow.hpp"
 #include "actors/tick_context.hpp"
 #include "actors/type_ids.hpp"
 #include "actors/wire_world.hpp"
@@ -74,6 +75,13 @@ struct coordinator_setup {
   worker_loss on_worker_loss = worker_loss::end_run;
   std::shared_ptr<const operator_board> operators;
   std::function<void(live_display)> display_gathered;
+  world::behaviour_settings behaviour;
+  /// By partition: the worker that steps it (its host's address and name), for a partition on
+  /// a worker.
+  std::vector<caf::actor_addr> host_of;
+  std::vector<std::string> host_name_of;
+  /// The shadows of the workers' partitions at the start (crash-nodes), moved into the state.
+  std::map<std::size_t, partition_shadow> shadows;
 };
 
 // A distributed tick in progress: the workers whose answers are still awaited, then the ack.
@@ -101,6 +109,13 @@ struct world_coordinator_state {
   remote_exchange exchange;
   /// How many of the operator's orders have gone out to the workers.
   std::size_t orders_sent = 0;
+  /// Under `--on-worker-loss crash-nodes`, by partition on a worker: what it takes to step it
+  /// here if its worker is lost.
+  std::map<std::size_t, partition_shadow> shadows;
+  /// Partitions whose worker is gone, to be stepped here from the next step of the world on.
+  std::set<std::size_t> lost_partitions;
+  /// Partitions that step here since their worker was lost: their pedestrians for the next step.
+  std::map<std::size_t, std::vector<world::pedestrian>> adopted;
 };
 
 // Opens `<path>.partial` and pedestrians.csv.partial beside it; throws when either cannot be
@@ -155,6 +170,7 @@ partition_report report_of(partition_states states) {
   out.kept = std::move(states.kept);
   out.result.handed_over = std::move(states.handed_over);
   out.result.events = std::move(states.events);
+  if (states.checkpoint) out.whole = std::move(states.whole);
   return out;
 }
 
@@ -167,20 +183,53 @@ void read_kept(partition_report& report, const world::snapshot& before) {
     report.result.pedestrians[k].state = std::move(kept[k]);
 }
 
+// The partitions of a lost worker step here from now on, from the pedestrians their shadows
+// give back: those their worker held at the start of this tick.
+void adopt_lost_partitions(caf::stateful_actor<world_coordinator_state>* self, tick_context& ctx) {
+  auto& st = self->state;
+  const auto& setup = *st.setup;
+  for (auto i : st.lost_partitions) {
+    auto shadow = st.shadows.find(i);
+    if (shadow == st.shadows.end()) continue;
+    const auto replayed = shadow->second.ticks_since_checkpoint();
+    st.adopted[i] = shadow->second.replay(*setup.station, setup.bounds[i], setup.behaviour);
+    spdlog::warn(
+        "world: crowd partition {} steps here from tick {} on, its worker {} being lost ({} "
+        "pedestrians, {} ticks stepped again from its last checkpoint)",
+        i, ctx.tick(), setup.host_name_of[i], st.adopted[i].size(), replayed);
+    ctx.emit(events::world_partition_adopted{
+        .partition = i, .worker = setup.host_name_of[i], .replayed_ticks = replayed});
+    st.shadows.erase(shadow);
+  }
+  st.lost_partitions.clear();
+}
+
 void step_world(caf::stateful_actor<world_coordinator_state>* self, tick_context& ctx,
                 std::vector<std::pair<mail_stamp, partition_report>> due) {
   auto& st = self->state;
   auto& setup = *st.setup;
   const auto count = setup.bounds.size();
+  adopt_lost_partitions(self, ctx);
   // Canonical order: by partition index, whatever order the reports arrived in.
   std::vector<world::partition_result> results(count);
+  std::vector<bool> reported_by(count, false);
+  std::vector<std::optional<std::vector<world::pedestrian>>> checkpoints(count);
   std::size_t reported = 0;
   for (auto& [stamp, report] : due) {
-    if (report.index >= count) continue;
+    // An adopted partition's last report, sent before its worker went, is stepped again here.
+    if (report.index >= count || st.adopted.count(report.index) != 0) continue;
     read_kept(report, *st.current);
     results[report.index] = std::move(report.result);
+    checkpoints[report.index] = std::move(report.whole);
+    reported_by[report.index] = true;
     ++reported;
   }
+  for (const auto& [i, pedestrians] : st.adopted) {
+    results[i] = world::partition_step(*setup.station, *st.current, pedestrians, setup.bounds[i],
+                                       setup.behaviour);
+    ++reported;
+  }
+  const auto previous = st.current;
   if (reported != count)
     ctx.emit(events::world_partitions_missing{.reported = reported, .partitions = count});
   const auto world_tick = st.current->tick() + 1;
@@ -198,13 +247,20 @@ void step_world(caf::stateful_actor<world_coordinator_state>* self, tick_context
   // a worker kept its own: it is sent the others only.
   std::vector<std::vector<world::pedestrian>> owned(count);
   for (std::size_t i = 0; i < count; ++i)
-    if (!setup.on_worker[i]) owned[i] = std::move(results[i].pedestrians);
+    if (!setup.on_worker[i] || st.adopted.count(i) != 0)
+      owned[i] = std::move(results[i].pedestrians);
   for (auto& r : results)
     for (auto& p : r.handed_over)
       owned[world::owner_of(setup.bounds, p.state.position)].push_back(std::move(p));
   for (auto& p : spawned)
     owned[world::owner_of(setup.bounds, p.state.position)].push_back(std::move(p));
   for (std::size_t i = 0; i < count; ++i) {
+    if (auto adopted = st.adopted.find(i); adopted != st.adopted.end()) {
+      adopted->second = std::move(owned[i]);
+      continue;
+    }
+    if (auto shadow = st.shadows.find(i); shadow != st.shadows.end() && reported_by[i])
+      shadow->second.stepped(previous, checkpoints[i] ? &*checkpoints[i] : nullptr, owned[i]);
     mail_stamp stamp{ctx.tick(), static_cast<std::uint8_t>(st.info.tick_phase), st.info.id,
                      st.sent++};
     if (setup.on_worker[i])
@@ -235,6 +291,10 @@ void lose_board(coordinator_actor* self, const caf::actor_addr& board) {
                          [&](const caf::actor& b) { return b.address() == board; });
   if (it == boards.end()) return;
   boards.erase(it);
+  const auto& hosts = self->state.setup->host_of;
+  for (std::size_t i = 0; i < hosts.size(); ++i)
+    if (hosts[i] == board && self->state.shadows.count(i) != 0)
+      self->state.lost_partitions.insert(i);
   spdlog::warn("world: a worker is gone; {} left to share the world with", boards.size());
   worker_answered(self, board);
 }
@@ -346,6 +406,7 @@ caf::behavior world_coordinator(coordinator_actor* self, coordinator_setup setup
   st.current = setup.initial;
   st.published = setup.initial;  // run_scenario shares it with the workers before the first tick
   st.setup.emplace(std::move(setup));
+  st.shadows = std::move(st.setup->shadows);
   // A run that ends early (a lost worker, a strategy that raised) still leaves whole files:
   // every row written is a whole tick, so they get their names up to where the world got.
   self->set_exit_handler([self](caf::exit_msg& msg) {
@@ -374,11 +435,15 @@ caf::behavior world_coordinator(coordinator_actor* self, coordinator_setup setup
         tick_context ctx(st.info.id, st.info.name, tick, st.info.tick_phase);
         auto due = st.reports.take_due(tick, p);
         auto clock = caf::actor_cast<caf::actor>(self->current_sender());
-        if (!due.empty() && !st.setup->remote_boards.empty()) {
+        // While partitions step on workers that may be lost, or here for lost ones, the world
+        // steps every tick even if no report came: all of them may have gone with their worker.
+        const bool any_may_go = !st.shadows.empty() || !st.adopted.empty();
+        if (any_may_go) ctx.wake_at(tick + 1);
+        if ((!due.empty() || any_may_go) && !st.setup->remote_boards.empty()) {
           gather_picks(self, std::move(ctx), std::move(clock), std::move(due));
           return;
         }
-        if (!due.empty()) step_world(self, ctx, std::move(due));
+        if (!due.empty() || any_may_go) step_world(self, ctx, std::move(due));
         self->send(clock, std::move(ctx).finish());
       },
   };
@@ -431,6 +496,12 @@ world_actors spawn_world(caf::actor_system& system, world_run_settings settings)
       infos[i].host = settings.partition_hosts[i].name;
     }
   }
+  // Under crash-nodes a worker's partition sends checkpoints, and is shadowed here from its
+  // first pedestrians on.
+  const bool checkpoints = settings.on_worker_loss == worker_loss::crash_nodes;
+  std::map<std::size_t, partition_shadow> shadows;
+  std::vector<caf::actor_addr> host_of(count);
+  std::vector<std::string> host_name_of(count);
   // The workers' partitions first: a worker that refuses leaves nothing spawned here.
   {
     caf::scoped_actor self{system};
@@ -441,7 +512,7 @@ world_actors spawn_world(caf::actor_system& system, world_run_settings settings)
       // As long as a worker may take to set up (remote_network.hpp, worker_setup_timeout).
       self->request(
               where.host, std::chrono::seconds(30), spawn_partition_atom_v,
-              partition_placement{i, bounds[i].min_x_m, bounds[i].max_x_m, std::move(owned[i])})
+              partition_placement{i, bounds[i].min_x_m, bounds[i].max_x_m, owned[i], checkpoints})
           .receive([&](caf::actor& spawned) { partitions[i] = std::move(spawned); },
                    [&](caf::error& err) {
                      failure = err == caf::sec::request_timeout ? "no answer within 30 s"
@@ -450,6 +521,9 @@ world_actors spawn_world(caf::actor_system& system, world_run_settings settings)
       if (!failure.empty())
         throw std::runtime_error(
             fmt::format("worker {} (crowd partition {}): {}", where.name, i, failure));
+      host_of[i] = where.host.address();
+      host_name_of[i] = where.name;
+      if (checkpoints) shadows.emplace(i, partition_shadow(std::move(owned[i])));
     }
   }
   for (std::size_t i = 0; i < count; ++i) {
@@ -463,15 +537,29 @@ world_actors spawn_world(caf::actor_system& system, world_run_settings settings)
     ps.pedestrians = std::move(owned[i]);
     partitions[i] = spawn_crowd_partition(system, std::move(ps));
   }
-  auto coordinator = system.spawn(
-      world_coordinator,
-      coordinator_setup{settings.station, bounds, std::move(spawner), cs.behaviour.tick_s,
-                        snapshot0, settings.end_tick, std::move(trajectories), partitions,
-                        on_worker, std::move(settings.snapshot_observers), settings.board,
-                        std::move(settings.remote_boards), std::move(settings.picks_gathered),
-                        std::move(settings.poses_gathered), std::move(settings.log_gathered),
-                        settings.on_worker_loss, std::move(settings.operators),
-                        std::move(settings.display_gathered)});
+  auto coordinator =
+      system.spawn(world_coordinator, coordinator_setup{settings.station,
+                                                        bounds,
+                                                        std::move(spawner),
+                                                        cs.behaviour.tick_s,
+                                                        snapshot0,
+                                                        settings.end_tick,
+                                                        std::move(trajectories),
+                                                        partitions,
+                                                        on_worker,
+                                                        std::move(settings.snapshot_observers),
+                                                        settings.board,
+                                                        std::move(settings.remote_boards),
+                                                        std::move(settings.picks_gathered),
+                                                        std::move(settings.poses_gathered),
+                                                        std::move(settings.log_gathered),
+                                                        settings.on_worker_loss,
+                                                        std::move(settings.operators),
+                                                        std::move(settings.display_gathered),
+                                                        cs.behaviour,
+                                                        std::move(host_of),
+                                                        std::move(host_name_of),
+                                                        std::move(shadows)});
   for (std::size_t i = 0; i < partitions.size(); ++i) {
     caf::anon_send(partitions[i], world_attach_atom_v, coordinator);
     out.participants.emplace_back(partitions[i], infos[i]);

@@ -30,6 +30,8 @@ struct partition_report {
   std::size_t index = 0;
   world::partition_result result;
   std::optional<subset_delta> kept;
+  /// A checkpoint from a partition on a worker (`partition_states::whole`).
+  std::optional<std::vector<world::pedestrian>> whole;
 };
 
 }  // namespace argus::actors

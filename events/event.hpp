@@ -29,7 +29,7 @@ using event = std::variant<
     // faults, the script, the world, the runtime
     fault_event, node_recovered, task_issued, task_cancelled, pedestrian_moved, goal_completed,
     world_partitions_missing, world_out_of_step, participant_down, video_render_failed,
-    video_out_of_step,
+    video_out_of_step, world_partition_adopted,
     // anything else
     custom>;
 

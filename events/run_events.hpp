@@ -215,6 +215,17 @@ struct world_partitions_missing {
   }
 };
 
+struct world_partition_adopted {
+  static constexpr std::string_view name = "world_partition_adopted";
+  std::uint64_t partition = 0;
+  std::string worker;
+  std::uint64_t replayed_ticks = 0;
+  template <class F>
+  void members(F&& f) {
+    f("partition", partition), f("worker", worker), f("replayed_ticks", replayed_ticks);
+  }
+};
+
 struct world_out_of_step {
   static constexpr std::string_view name = "world_out_of_step";
   std::uint64_t partition = 0;

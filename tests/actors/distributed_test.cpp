@@ -336,6 +336,26 @@ TEST(distributed, a_lost_worker_ends_the_run_or_its_cameras_crash) {
     EXPECT_EQ(events.find(line) != std::string::npos, worker == 1) << "camera " << camera;
   }
   EXPECT_TRUE(std::filesystem::exists(dir / "metrics.json"));
+  // Its crowd partitions (2 and 3 of 4) step on here from their last checkpoints: the crowd
+  // is the one one process steps, to the last tick.
+  for (const auto* line : {R"("kind":"world_partition_adopted","partition":2,"worker":"local-2")",
+                           R"("kind":"world_partition_adopted","partition":3,"worker":"local-2")"})
+    EXPECT_NE(events.find(line), std::string::npos) << line;
+  EXPECT_EQ(events.find("world_partitions_missing"), std::string::npos);
+  const auto alone_dir = scratch("lost-crash-alone");
+  auto alone = config::load_scenario(std::filesystem::path(ARGUS_SOURCE_DIR) / "scenarios" /
+                                     "penn_station_emulated.yaml");
+  alone.run.seed = 5;
+  alone.run.duration = config::seconds{120.0};
+  alone.run.threads = 2;
+  alone.run.output_dir = alone_dir.string();
+  run_scenario(alone, {});
+  const auto crowd_alone = file_text(alone_dir / "trajectories.csv");
+  EXPECT_GT(crowd_alone.size(), 1000000u);
+  EXPECT_TRUE(file_text(dir / "trajectories.csv") == crowd_alone)
+      << "the crowd after the loss is not one process's crowd";
+  EXPECT_TRUE(file_text(dir / "pedestrians.csv") == file_text(alone_dir / "pedestrians.csv"));
+  std::filesystem::remove_all(alone_dir);
   std::filesystem::remove_all(dir);
 }
 
@@ -403,16 +423,13 @@ TEST(distributed, crowd_partitions_go_to_the_workers_in_blocks_of_strips) {
   auto s = replay_faults(scratch("crowd-placement"));
   using w = std::optional<std::size_t>;
   s.world.partitions = 8;
-  EXPECT_EQ(place_partitions(s, 2, worker_loss::end_run),
-            (std::vector<w>{0u, 0u, 0u, 0u, 1u, 1u, 1u, 1u}));
-  EXPECT_EQ(place_partitions(s, 3, worker_loss::end_run),
-            (std::vector<w>{0u, 0u, 0u, 1u, 1u, 1u, 2u, 2u}));
+  EXPECT_EQ(place_partitions(s, 2), (std::vector<w>{0u, 0u, 0u, 0u, 1u, 1u, 1u, 1u}));
+  EXPECT_EQ(place_partitions(s, 3), (std::vector<w>{0u, 0u, 0u, 1u, 1u, 1u, 2u, 2u}));
   s.world.partitions = 2;
-  EXPECT_EQ(place_partitions(s, 4, worker_loss::end_run), (std::vector<w>{0u, 2u}));
-  // Here: when asked, and when a lost worker must not take pedestrians with it.
-  EXPECT_EQ(place_partitions(s, 4, worker_loss::crash_nodes), (std::vector<w>{w{}, w{}}));
+  EXPECT_EQ(place_partitions(s, 4), (std::vector<w>{0u, 2u}));
+  // Here when asked.
   s.placement.crowd = config::crowd_placement::coordinator;
-  EXPECT_EQ(place_partitions(s, 4, worker_loss::end_run), (std::vector<w>{w{}, w{}}));
+  EXPECT_EQ(place_partitions(s, 4), (std::vector<w>{w{}, w{}}));
 }
 
 TEST(distributed, a_worker_set_up_without_the_crowd_refuses_a_partition) {

@@ -9,7 +9,8 @@
 #   or on the coordinator when asked;
 # - a worker killed mid-run: the coordinator ends within 5 s with exit 1, naming the worker and
 #   the last whole tick, and every line of events.jsonl is whole;
-# - the same under --on-worker-loss crash-nodes: exit 0, the run goes on to its end, the lost
+# - the same under --on-worker-loss crash-nodes: exit 0, the run goes on to its end, the crowd
+#   stays one process's (its lost partitions step on on the coordinator), the lost
 #   worker's cameras are down (`worker_lost`) and the survivors notice;
 # - a worker that never answers, or no worker at all, is reported by name;
 # - a coordinator of another Argus version, in a process of its own, is refused naming the worker
@@ -187,8 +188,20 @@ noticed = [e for e in events if e["kind"] == "neighbour_lost" and e["tick"] > at
            and e["neighbour"] in cameras and e["camera"] not in cameras]
 assert noticed, "no surviving camera noticed a lost one"
 print(f"lost at tick {at}: cameras {sorted(cameras)} down, noticed by", sorted({e['camera'] for e in noticed}))
+# Its crowd partitions (2 and 3 of 4) stepped on, on the coordinator, from their checkpoints.
+adopted = [e for e in events if e["kind"] == "world_partition_adopted"]
+assert sorted(e["partition"] for e in adopted) == [2, 3], adopted
+assert all(e["worker"] == victim and 0 <= e["replayed_ticks"] < 15 for e in adopted), adopted
+assert not [e for e in events if e["kind"] == "world_partitions_missing"]
 PY
-echo "a worker killed under crash-nodes: exit 0, the run went on to its end"
+# The crowd does not look at the cameras: after the loss it is still one process's crowd.
+"$ARGUS" run "$SOURCE/scenarios/penn_station_emulated.yaml" --seed 5 --duration "10 min" --no-feeds \
+  --no-progress --set run.output_dir="$OUT/crashed-alone" >"$OUT/crashed-alone.txt" 2>&1 ||
+  fail "the one-process run of the crash-nodes scenario: $(tail -3 "$OUT/crashed-alone.txt")"
+for f in trajectories.csv pedestrians.csv; do
+  cmp -s "$OUT/crashed-alone/$f" "$OUT/crashed/$f" || fail "crash-nodes: $f differs from one process's"
+done
+echo "a worker killed under crash-nodes: exit 0, the run went on to its end, the crowd one process's"
 
 # A worker that accepts the connection and never answers, and a port with no worker.
 python3 -c '

@@ -71,6 +71,7 @@ const std::vector<std::string> lines{
     R"LINE({"t":1.000000,"tick":15,"source":"camera/3","kind":"participant_down","expected":false})LINE",
     R"LINE({"t":1.000000,"tick":15,"source":"video","kind":"video_render_failed","camera":3,"error_code":2})LINE",
     R"LINE({"t":1.000000,"tick":15,"source":"video","kind":"video_out_of_step","tick":15})LINE",
+    R"LINE({"t":1.000000,"tick":15,"source":"world","kind":"world_partition_adopted","partition":2,"worker":"127.0.0.1:7002","replayed_ticks":6})LINE",
 };
 
 // The members of a line as the recorder wrote them: after its four common ones.
