@@ -34,7 +34,14 @@ void display_relay::turn_done(int camera, std::int64_t tick, const vision::ptz_s
   shown.camera = camera;
   shown.tick = tick;
   shown.pose = pose;
-  if (!image.empty()) {
+  bool watched = false;
+  {
+    std::lock_guard<std::mutex> guard(mutex_);
+    watched = watched_.count(camera) != 0;
+  }
+  // An encode per sensed frame of every camera would cost a large pixel run dearly, for frames
+  // no page shows.
+  if (!image.empty() && watched) {
     cv::imencode(".jpg", image, shown.jpeg, {cv::IMWRITE_JPEG_QUALITY, display_jpeg_quality});
     for (const auto& look : looks)
       if (look.found)
@@ -50,6 +57,11 @@ void display_relay::turn_done(int camera, std::int64_t tick, const vision::ptz_s
     return;
   }
   kept = std::move(shown);
+}
+
+void display_relay::watch(const std::vector<int>& cameras) {
+  std::lock_guard<std::mutex> guard(mutex_);
+  watched_ = std::set<int>(cameras.begin(), cameras.end());
 }
 
 live_display display_relay::take() {

@@ -4,6 +4,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <set>
 
 #include "actors/node_observer.hpp"
 #include "actors/wire_live.hpp"
@@ -26,10 +27,15 @@ class display_relay final : public node_observer {
   /// What was kept since the last call, by camera, and the traffic since; then forgets it.
   live_display take();
 
+  /// From now on, only these cameras' frames are encoded and kept (`display_watch`); the others
+  /// show their poses only. None at first: no page watches yet.
+  void watch(const std::vector<int>& cameras);
+
  private:
   std::shared_ptr<node_observer> inner_;
   std::mutex mutex_;
   std::map<int, camera_display> latest_;
+  std::set<int> watched_;
   std::uint64_t sent_ = 0;
   std::uint64_t received_ = 0;
 };

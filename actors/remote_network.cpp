@@ -174,7 +174,8 @@ network_directory spawn_remote_network(caf::actor_system& system, const config::
 }
 
 void finish_workers(caf::actor_system& system, const std::vector<worker_contact>& workers,
-                    eval::observation_log& log, std::chrono::milliseconds timeout, bool streamed) {
+                    eval::observation_log& log, std::chrono::milliseconds timeout, bool streamed,
+                    const std::function<void(live_display)>& shown) {
   caf::scoped_actor self{system};
   for (const auto& w : workers) {
     // A worker already lost (the run failed for it) is skipped at once rather than waited for:
@@ -193,6 +194,10 @@ void finish_workers(caf::actor_system& system, const std::vector<worker_contact>
     }
     self->demonitor(w.host);
     try {
+      // The last tick's turns: no gather follows them.
+      if (shown)
+        shown(ask<live_display>(self, w, timeout, "showing its cameras' last turns",
+                                take_display_atom_v));
       log.add_worker_share(ask<eval::observation_log::contents>(
           self, w, timeout, "handing over its log", take_log_atom_v));
       ask<done_atom>(self, w, timeout, "releasing the run", release_atom_v);

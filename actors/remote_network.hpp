@@ -1,10 +1,12 @@
 #pragma once
 
 #include <chrono>
+#include <functional>
 #include <string>
 #include <vector>
 
 #include "actors/fault_injector.hpp"
+#include "actors/wire_live.hpp"
 #include "actors/worker_loss.hpp"
 #include "actors/worker_placement.hpp"
 #include "actors/worker_protocol.hpp"
@@ -46,12 +48,14 @@ network_directory spawn_remote_network(caf::actor_system& system, const config::
                                        worker_loss on_loss = worker_loss::end_run,
                                        const std::vector<bool>& steps_crowd = {});
 
-/// Once the run is over: adds what every worker's cameras recorded to `log`, and tells each
-/// worker to end what it hosted. A worker that does not answer within `timeout` is skipped
-/// with a warning (the run has already failed when that happens, or, when the workers
+/// Once the run is over: hands what a live run's console has not yet shown of every worker's
+/// cameras (their last tick's turns) to `shown`, when set, adds what they recorded to `log`, and
+/// tells each worker to end what it hosted. A worker that does not answer within `timeout` is
+/// skipped with a warning (the run has already failed when that happens, or, when the workers
 /// `streamed` their logs every tick, went on without it).
 void finish_workers(caf::actor_system& system, const std::vector<worker_contact>& workers,
                     eval::observation_log& log, std::chrono::milliseconds timeout,
-                    bool streamed = false);
+                    bool streamed = false,
+                    const std::function<void(live_display)>& shown = nullptr);
 
 }  // namespace argus::actors

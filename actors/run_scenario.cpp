@@ -256,6 +256,7 @@ run_outcome run_scenario(const config::scenario& scenario, const run_options& op
     world_settings.display_gathered = [console](live_display shown) {
       show_on_console(*console, std::move(shown));
     };
+    world_settings.watched_cameras = [console] { return console->watched(); };
   }
   if (options.video) {
     video_settings vs;
@@ -388,8 +389,11 @@ run_outcome run_scenario(const config::scenario& scenario, const run_options& op
   // The render workers are detached threads linked to the front: end them with it.
   if (pool.front) caf::anon_send_exit(pool.front, caf::exit_reason::user_shutdown);
   if (!workers.empty()) {
+    std::function<void(live_display)> shown;
+    if (console)
+      shown = [console](live_display last) { show_on_console(*console, std::move(last)); };
     finish_workers(system, workers, *log, std::chrono::seconds(10),
-                   options.on_worker_loss == worker_loss::crash_nodes);
+                   options.on_worker_loss == worker_loss::crash_nodes, shown);
     caf::anon_send_exit(anchor, caf::exit_reason::user_shutdown);
   }
   if (!failure.empty()) {

@@ -67,6 +67,17 @@ typename Inspector::result_type inspect(Inspector& f, camera_display& x) {
   return f(x.camera, x.tick, x.pose, x.jpeg, x.boxes);
 }
 
+/// The cameras whose frames the console wants (`live::console_state::watched`): a worker encodes
+/// and sends only these cameras' frames with its gathers.
+struct display_watch {
+  std::vector<int> cameras;
+};
+
+template <class Inspector>
+typename Inspector::result_type inspect(Inspector& f, display_watch& x) {
+  return f(x.cameras);
+}
+
 /// A worker's cameras as the console shows them, since it was last asked: each camera's latest
 /// turn, and the network messages they sent and received.
 struct live_display {

@@ -417,6 +417,10 @@ caf::behavior worker_host(host_actor* self, std::string name, std::size_t render
         if (st.run->display) out.display = st.run->display->take();
         return out;
       },
+      [self](display_watch_atom, const display_watch& watch) {
+        auto& st = self->state;
+        if (st.run && st.run->display) st.run->display->watch(watch.cameras);
+      },
       [self](operator_orders_atom, std::vector<operator_order>& orders) {
         auto& st = self->state;
         if (!st.run || !st.run->world->operators) return;
@@ -437,6 +441,11 @@ caf::behavior worker_host(host_actor* self, std::string name, std::size_t render
         return done_atom_v;
       },
       [self](video_tile_atom, const video_tile_request& tile) { return render_tile(self, tile); },
+      [self](take_display_atom) -> live_display {
+        auto& st = self->state;
+        if (!st.run || !st.run->display) return {};
+        return st.run->display->take();
+      },
       [self](take_log_atom) -> eval::observation_log::contents {
         auto& st = self->state;
         if (!st.run) return {};

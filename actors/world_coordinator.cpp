@@ -82,6 +82,7 @@ struct coordinator_setup {
   std::vector<std::string> host_name_of;
   /// The shadows of the workers' partitions at the start (crash-nodes), moved into the state.
   std::map<std::size_t, partition_shadow> shadows;
+  std::function<std::vector<int>()> watched_cameras;
 };
 
 // A distributed tick in progress: the workers whose answers are still awaited, then the ack.
@@ -116,6 +117,8 @@ struct world_coordinator_state {
   std::set<std::size_t> lost_partitions;
   /// Partitions that step here since their worker was lost: their pedestrians for the next step.
   std::map<std::size_t, std::vector<world::pedestrian>> adopted;
+  /// The cameras the workers were last told a page watches.
+  std::vector<int> watched_sent;
 };
 
 // Opens `<path>.partial` and pedestrians.csv.partial beside it; throws when either cannot be
@@ -327,6 +330,12 @@ void publish_to_workers(coordinator_actor* self) {
     if (auto orders = st.setup->operators->take_all_new(st.orders_sent); !orders.empty())
       for (const auto& board : st.setup->remote_boards)
         self->send(board, operator_orders_atom_v, orders);
+  if (st.setup->watched_cameras)
+    if (auto watched = st.setup->watched_cameras(); watched != st.watched_sent) {
+      for (const auto& board : st.setup->remote_boards)
+        self->send(board, display_watch_atom_v, display_watch{watched});
+      st.watched_sent = std::move(watched);
+    }
   for (const auto& board : st.setup->remote_boards) ex.awaited.insert(board.address());
   for (const auto& board : st.setup->remote_boards)
     self->request(board, caf::infinite, board_atom_v, bytes, ex.picks)
@@ -559,7 +568,8 @@ world_actors spawn_world(caf::actor_system& system, world_run_settings settings)
                                                         cs.behaviour,
                                                         std::move(host_of),
                                                         std::move(host_name_of),
-                                                        std::move(shadows)});
+                                                        std::move(shadows),
+                                                        std::move(settings.watched_cameras)});
   for (std::size_t i = 0; i < partitions.size(); ++i) {
     caf::anon_send(partitions[i], world_attach_atom_v, coordinator);
     out.participants.emplace_back(partitions[i], infos[i]);

@@ -76,6 +76,10 @@ struct world_run_settings {
   /// What the console shows of the workers' cameras, gathered with their picks, one worker's at
   /// a time; null for none.
   std::function<void(live_display)> display_gathered;
+  /// The cameras a page watches (`live::console_state::watched`), read before each publication:
+  /// when they change, every worker is told (`display_watch_atom`), and sends only their frames.
+  /// Null for none.
+  std::function<std::vector<int>()> watched_cameras;
 };
 
 /// The actors of a run's crowd, to join to the clock.

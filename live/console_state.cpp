@@ -281,6 +281,19 @@ nlohmann::json console_state::state_json() const {
   return out;
 }
 
+void console_state::watch(int camera, std::chrono::steady_clock::time_point now) {
+  std::lock_guard<std::mutex> guard(mutex_);
+  watched_[camera] = now;
+}
+
+std::vector<int> console_state::watched(std::chrono::steady_clock::time_point now) const {
+  std::vector<int> out;
+  std::lock_guard<std::mutex> guard(mutex_);
+  for (const auto& [camera, asked] : watched_)
+    if (now - asked <= feed_watch_window) out.push_back(camera);
+  return out;
+}
+
 std::optional<feed_frame> console_state::feed(int camera) const {
   feed_frame out;
   {

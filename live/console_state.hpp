@@ -2,6 +2,7 @@
 
 #include <array>
 #include <atomic>
+#include <chrono>
 #include <cstdint>
 #include <deque>
 #include <map>
@@ -99,6 +100,19 @@ class console_state {
   /// Camera `camera`'s latest frame, or nothing when it has not sensed yet or is unknown.
   std::optional<feed_frame> feed(int camera) const;
 
+  /// A page asked for camera `camera`'s feed (at `now`).
+  void watch(int camera,
+             std::chrono::steady_clock::time_point now = std::chrono::steady_clock::now());
+
+  /// The cameras whose feed a page asked for within `feed_watch_window` before `now`, in
+  /// order: on workers, only these cameras' frames cross to the console.
+  std::vector<int> watched(
+      std::chrono::steady_clock::time_point now = std::chrono::steady_clock::now()) const;
+
+  /// How long a camera stays watched after a page last asked for its feed. The page asks for
+  /// the next frame as soon as it has shown one, about 15 times a second.
+  static constexpr std::chrono::seconds feed_watch_window{2};
+
   /// Camera `camera`'s pose now, or nothing for an unknown camera.
   std::optional<camera_pose> pose(int camera) const;
 
@@ -160,6 +174,7 @@ class console_state {
   std::map<int, camera_entry> cameras_;
   std::map<int, group_entry> groups_;
   std::map<int, task_entry> tasks_;
+  std::map<int, std::chrono::steady_clock::time_point> watched_;
   std::deque<std::string> recent_;  // the latest notable events, for the page's log
   std::int64_t tick_ = 0;
   // (wall seconds, tick, sent, received) as the readers saw them: the speed ratio and message

@@ -181,6 +181,8 @@ void console_server::routes() {
   });
   svr.Get(R"(/feed/(-?\d{1,9})\.jpg)", [this](const httplib::Request& req, httplib::Response& res) {
     const int camera = std::stoi(req.matches[1].str());
+    // On workers, a camera's own frames come to the console only while a page watches it.
+    session_->console.watch(camera);
     std::optional<feed_image> image;
     try {
       image = feeds_->frame(camera, session_->console);

@@ -276,7 +276,9 @@ TEST(distributed, a_live_run_on_workers_takes_the_operators_orders_as_one_proces
   EXPECT_EQ(outputs(dir), outputs(alone_dir));
   EXPECT_EQ(alone->log.commands(), shared->log.commands());
   // What the page shows: the workers' traffic, and the poses their cameras turned to (camera 7
-  // zooms on its target), one tick behind one process's (they come with the next gather).
+  // zooms on its target), one tick behind one process's (they come with the next gather) while
+  // the run goes, and the same as one process's once it is over (the last turns come with the
+  // workers' logs).
   const auto shown = shared->console.state_json();
   EXPECT_GT(shown["messages"]["sent"].get<std::uint64_t>(), 0u);
   EXPECT_GT(shown["messages"]["received"].get<std::uint64_t>(), 0u);
@@ -290,6 +292,13 @@ TEST(distributed, a_live_run_on_workers_takes_the_operators_orders_as_one_proces
       ++turned;
   }
   EXPECT_GT(turned, 0) << "no camera's pose on the workers reached the console";
+  for (const auto& c : s.cameras) {
+    const auto last = shared->console.pose(c.id);
+    const auto alone_last = alone->console.pose(c.id);
+    EXPECT_TRUE(last->pan_deg == alone_last->pan_deg && last->tilt_deg == alone_last->tilt_deg &&
+                last->field_of_view_deg == alone_last->field_of_view_deg)
+        << "camera " << c.id << ": its last pose on the console is not one process's";
+  }
   std::filesystem::remove_all(alone_dir);
   std::filesystem::remove_all(dir);
 }

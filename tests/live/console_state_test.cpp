@@ -104,5 +104,19 @@ TEST(console_state, a_workers_frame_arrives_as_jpeg_and_is_decoded_when_asked_fo
   EXPECT_FALSE(console.feed(3));
 }
 
+TEST(console_state, a_camera_is_watched_while_a_page_keeps_asking_for_its_feed) {
+  console_state console(three_cameras());
+  const auto t0 = std::chrono::steady_clock::time_point{} + std::chrono::hours(1);
+  EXPECT_TRUE(console.watched(t0).empty());
+  console.watch(3, t0);
+  console.watch(1, t0 + std::chrono::milliseconds(1500));
+  EXPECT_EQ(console.watched(t0 + std::chrono::seconds(1)), (std::vector<int>{1, 3}));
+  // Two seconds after a page last asked, a camera is no longer watched.
+  EXPECT_EQ(console.watched(t0 + std::chrono::milliseconds(2500)), (std::vector<int>{1}));
+  EXPECT_TRUE(console.watched(t0 + std::chrono::seconds(4)).empty());
+  console.watch(3, t0 + std::chrono::seconds(4));
+  EXPECT_EQ(console.watched(t0 + std::chrono::seconds(5)), (std::vector<int>{3}));
+}
+
 }  // namespace
 }  // namespace argus::live
