@@ -519,9 +519,9 @@ world_actors spawn_world(caf::actor_system& system, world_run_settings settings)
       const auto& where = settings.partition_hosts[i];
       std::string failure;
       // As long as a worker may take to set up (remote_network.hpp, worker_setup_timeout).
-      self->request(
-              where.host, std::chrono::seconds(30), spawn_partition_atom_v,
-              partition_placement{i, bounds[i].min_x_m, bounds[i].max_x_m, owned[i], checkpoints})
+      self->request(where.host, std::chrono::seconds(30), spawn_partition_atom_v,
+                    partition_placement{i, bounds[i].min_x_m, bounds[i].max_x_m,
+                                        checkpoints ? owned[i] : std::move(owned[i]), checkpoints})
           .receive([&](caf::actor& spawned) { partitions[i] = std::move(spawned); },
                    [&](caf::error& err) {
                      failure = err == caf::sec::request_timeout ? "no answer within 30 s"
