@@ -93,6 +93,13 @@ class clock_actor : public caf::event_based_actor {
         [this](std::vector<tick_ack>& acks) {
           for (auto& ack : acks) on_ack(ack);
         },
+        [this](std::vector<tick_ack>& acks, worker_gather& gathered) {
+          if (gather_sink_)
+            send(gather_sink_, gather_atom_v, caf::actor_cast<caf::actor_addr>(current_sender()),
+                 tick_, std::move(gathered));
+          for (auto& ack : acks) on_ack(ack);
+        },
+        [this](gather_sink_atom, caf::actor& sink) { gather_sink_ = std::move(sink); },
         [this](advance_atom) {
           if (settings_.pacing && !live_tick_due()) return;
           begin_tick();
@@ -653,6 +660,8 @@ class clock_actor : public caf::event_based_actor {
   std::vector<entry*> due_;
   // This phase's ticks for each sub-clock (clock_settings::sub_clocks), by host.
   std::map<std::string, std::vector<batched_tick>> batches_;
+  // Where a sub-clock's gather goes (`gather_sink_atom`); none in one process.
+  caf::actor gather_sink_;
   std::vector<std::uint64_t> due_ids_;
   std::size_t awaiting_ = 0;
   std::vector<sim_event> batch_;

@@ -71,6 +71,11 @@ bool clock_on_own_thread(unsigned threads, std::size_t participants,
 /// A participant with a `host` that dies because its connection broke takes its whole worker
 /// with it: the run ends, or goes on without it (`clock_settings::on_worker_loss`).
 /// - `tick_ack` from participants, `(recorded_atom, int64 tick)` from the recorder.
+/// - From a sub-clock, `std::vector<tick_ack>`, or in phase world `(std::vector<tick_ack>,
+///   worker_gather)`: what the worker's cameras did since it last answered, passed on as
+///   `(gather_atom, actor_addr sub_clock, int64 tick, worker_gather)` to the actor named by
+///   `(gather_sink_atom, actor)` (the world coordinator) before the acks are read, so it is
+///   there before that actor's tick of phase network.
 ///
 /// Each tick, for each phase in order, it sends `(tick_atom, int64 tick, uint8 phase, uint32
 /// relayed)` to every participant due in that phase and waits for all their `tick_ack`s;

@@ -376,6 +376,11 @@ run_outcome run_scenario(const config::scenario& scenario, const run_options& op
     throw;
   }
   for (auto& [handle, info] : crowd.participants) caf::anon_send(clock, join_atom_v, handle, info);
+  // What the workers' cameras did comes with their answers in phase world, for the world.
+  if (!workers.empty())
+    for (auto& [handle, info] : crowd.participants)
+      if (info.id == participant_ids::world_coordinator)
+        caf::anon_send(clock, gather_sink_atom_v, handle);
   if (!workers.empty()) share_first_snapshot(system, workers, *board->latest());
 
   std::string failure;

@@ -101,5 +101,6 @@ CAF_ADD_ATOM(argus, argus::actors, video_tile_atom, "w_tile")
 CAF_ADD_ATOM(argus, argus::actors, operator_orders_atom, "w_orders")
 CAF_ADD_ATOM(argus, argus::actors, display_watch_atom, "w_watch")
 CAF_ADD_ATOM(argus, argus::actors, take_display_atom, "w_display")
+CAF_ADD_ATOM(argus, argus::actors, gather_sink_atom, "w_gsink")
 
 CAF_END_TYPE_ID_BLOCK(argus)

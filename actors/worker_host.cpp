@@ -18,6 +18,7 @@
 #include "actors/display_relay.hpp"
 #include "actors/link.hpp"
 #include "actors/participant_ids.hpp"
+#include "actors/phase.hpp"
 #include "actors/render_pool.hpp"
 #include "actors/run_observer.hpp"
 #include "actors/type_ids.hpp"
@@ -89,6 +90,7 @@ class setup_files {
 // The phase's ticks the clock handed this worker as its sub-clock: the acks awaited, and those in.
 struct tick_batch {
   caf::actor clock;
+  std::uint8_t phase = 0;
   std::set<std::uint64_t> waiting;
   std::vector<tick_ack> acks;
 };
@@ -320,11 +322,29 @@ caf::result<std::vector<caf::actor>> spawn_cameras(host_actor* self,
   return out;
 }
 
-// Answers the clock once every camera of the batch has acknowledged (or died).
+// What its cameras did since it was last asked (worker_gather).
+worker_gather take_gather(hosted_run& run) {
+  worker_gather out;
+  out.picks = run.picks->take();
+  if (const auto& poses = run.world->poses)
+    for (const auto& [camera, e] : poses->latest()) out.poses.push_back({camera, e.tick, e.pose});
+  if (run.stream_log) out.log = run.log->take_recorded();
+  if (run.display) out.display = run.display->take();
+  return out;
+}
+
+// Answers the clock once every camera of the batch has acknowledged (or died). The world's
+// phase comes just before the network's, where the world coordinator needs what the cameras
+// did: nothing here acts in between, so the answer carries it, and the coordinator need not
+// ask (`gather_atom`), a round trip less a tick.
 void answer_batch(host_actor* self) {
-  auto& batch = self->state.run->batch;
+  auto& run = *self->state.run;
+  auto& batch = run.batch;
   if (!batch.waiting.empty() || !batch.clock) return;
-  self->send(batch.clock, std::move(batch.acks));
+  if (batch.phase == static_cast<std::uint8_t>(phase::world))
+    self->send(batch.clock, std::move(batch.acks), take_gather(run));
+  else
+    self->send(batch.clock, std::move(batch.acks));
   batch.acks.clear();
   batch.clock = caf::actor{};
 }
@@ -334,6 +354,7 @@ void tick_batch_of(host_actor* self, std::int64_t tick, std::uint8_t phase,
   auto& run = *self->state.run;
   auto& batch = run.batch;
   batch.clock = caf::actor_cast<caf::actor>(self->current_sender());
+  batch.phase = phase;
   for (const auto& d : due) {
     auto it = run.participants.find(d.participant);
     if (it == run.participants.end()) continue;  // gone: the clock watches it too
@@ -408,14 +429,7 @@ caf::behavior worker_host(host_actor* self, std::string name, std::size_t render
       [self](gather_atom) -> worker_gather {
         auto& st = self->state;
         if (!st.run) return {};
-        worker_gather out;
-        out.picks = st.run->picks->take();
-        if (const auto& poses = st.run->world->poses)
-          for (const auto& [camera, e] : poses->latest())
-            out.poses.push_back({camera, e.tick, e.pose});
-        if (st.run->stream_log) out.log = st.run->log->take_recorded();
-        if (st.run->display) out.display = st.run->display->take();
-        return out;
+        return take_gather(*st.run);
       },
       [self](display_watch_atom, const display_watch& watch) {
         auto& st = self->state;

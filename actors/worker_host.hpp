@@ -34,9 +34,11 @@ const char* argus_version();
 ///   those camera nodes attached to their links (also for a camera that recovers from a crash);
 /// - `(spawn_partition_atom, partition_placement)` -> `caf::actor`: spawns a crowd partition that
 ///   reads its worker's board (a setup with `steps_crowd`, which loaded the distance fields);
-/// - every tick, in phase network, `(gather_atom)` -> `worker_gather`: the picks its cameras
-///   made since it was last asked, by task, with `--video` each camera's latest pose, and in a
-///   live run what the console shows of its cameras; in a live run, `(operator_orders_atom,
+/// - every tick, what its cameras did since it was last asked (`worker_gather`: the picks its
+///   cameras made, by task, with `--video` each camera's latest pose, and in a live run what the
+///   console shows of them): with its answer to the clock in phase world, `(std::vector<tick_ack>,
+///   worker_gather)`, or, when it had nothing to tick in phase world, in phase network as the
+///   answer to `(gather_atom)`; then, in a live run, `(operator_orders_atom,
 ///   std::vector<operator_order>)` (no answer): the operator's new orders, onto the operator board
 ///   its cameras read; then `(board_atom, serialized_delta, std::vector<eval::task_origin> picks)`
 ///   -> `done_atom`: the picks of every worker join its log, and the world's new snapshot, rebuilt

@@ -95,7 +95,7 @@ struct remote_exchange {
   std::vector<eval::task_origin> picks;
   // What the workers' cameras recorded since the last gather, by worker, added in the
   // workers' order once all have answered.
-  std::map<std::size_t, eval::observation_log::contents> logs;
+  std::map<std::size_t, std::vector<eval::observation_log::contents>> logs;
   std::set<caf::actor_addr> awaited;
 };
 
@@ -119,6 +119,13 @@ struct world_coordinator_state {
   std::map<std::size_t, std::vector<world::pedestrian>> adopted;
   /// The cameras the workers were last told a page watches.
   std::vector<int> watched_sent;
+  /// What each worker's cameras did, as its answers in phase world brought it (through the
+  /// clock, `gather_atom`), since the world last took it, and the tick of the last.
+  struct pushed_gathers {
+    std::int64_t tick = -1;
+    std::vector<worker_gather> gathers;
+  };
+  std::map<caf::actor_addr, pushed_gathers> pushed;
   /// `current` is stepped but not yet in trajectories.csv: it is written once the tick is
   /// acknowledged, while the cameras' phase runs (`write_stepped`).
   bool unwritten = false;
@@ -297,6 +304,7 @@ void lose_board(coordinator_actor* self, const caf::actor_addr& board) {
                          [&](const caf::actor& b) { return b.address() == board; });
   if (it == boards.end()) return;
   boards.erase(it);
+  self->state.pushed.erase(board);
   const auto& hosts = self->state.setup->host_of;
   for (std::size_t i = 0; i < hosts.size(); ++i)
     if (hosts[i] == board && self->state.shadows.count(i) != 0)
@@ -357,6 +365,20 @@ void publish_to_workers(coordinator_actor* self) {
   if (ex.awaited.empty()) worker_answered(self, caf::actor_addr{});
 }
 
+// What worker `w`'s cameras did, from its answer in phase world or to `gather_atom`.
+void absorb_gather(coordinator_actor* self, std::size_t w, worker_gather gathered) {
+  auto& st = self->state;
+  auto& ex = st.exchange;
+  ex.picks.insert(ex.picks.end(), gathered.picks.begin(), gathered.picks.end());
+  // Each camera is on one worker: the order of the workers' answers cannot matter.
+  if (st.setup->poses_gathered) st.setup->poses_gathered(gathered.poses);
+  if (st.setup->log_gathered) ex.logs[w].push_back(std::move(gathered.log));
+  if (st.setup->display_gathered) st.setup->display_gathered(std::move(gathered.display));
+}
+
+// A worker whose answer in this tick's phase world brought what its cameras did is not asked
+// again: nothing on it acts between that phase and this one. One that stepped nothing in
+// phase world (no crowd partition of its own) is asked.
 void gather_picks(coordinator_actor* self, tick_context ctx, caf::actor clock,
                   std::vector<std::pair<mail_stamp, partition_report>> due) {
   auto& st = self->state;
@@ -366,19 +388,23 @@ void gather_picks(coordinator_actor* self, tick_context ctx, caf::actor clock,
   ex.clock = std::move(clock);
   ex.due = std::move(due);
   const auto boards = st.setup->remote_boards;
-  for (const auto& board : boards) ex.awaited.insert(board.address());
-  for (std::size_t w = 0; w < boards.size(); ++w)
+  std::vector<std::size_t> ask;
+  for (std::size_t w = 0; w < boards.size(); ++w) {
+    bool answered = false;
+    if (auto it = st.pushed.find(boards[w].address()); it != st.pushed.end()) {
+      answered = it->second.tick == ex.ctx->tick();
+      for (auto& gathered : it->second.gathers) absorb_gather(self, w, std::move(gathered));
+      st.pushed.erase(it);
+    }
+    if (answered) continue;
+    ask.push_back(w);
+    ex.awaited.insert(boards[w].address());
+  }
+  for (auto w : ask)
     self->request(boards[w], caf::infinite, gather_atom_v)
         .then(
             [self, w, addr = boards[w].address()](worker_gather& gathered) {
-              auto& st = self->state;
-              auto& ex = st.exchange;
-              ex.picks.insert(ex.picks.end(), gathered.picks.begin(), gathered.picks.end());
-              // Each camera is on one worker: the order of the workers' answers cannot matter.
-              if (st.setup->poses_gathered) st.setup->poses_gathered(gathered.poses);
-              if (st.setup->log_gathered) ex.logs[w] = std::move(gathered.log);
-              if (st.setup->display_gathered)
-                st.setup->display_gathered(std::move(gathered.display));
+              absorb_gather(self, w, std::move(gathered));
               worker_answered(self, addr);
             },
             [self, addr = boards[w].address()](caf::error& err) {
@@ -395,7 +421,8 @@ void step_and_publish(coordinator_actor* self) {
   std::sort(ex.picks.begin(), ex.picks.end(),
             [](const auto& a, const auto& b) { return a.task < b.task; });
   if (st.setup->picks_gathered) st.setup->picks_gathered(ex.picks);
-  for (auto& [w, log] : ex.logs) st.setup->log_gathered(std::move(log));
+  for (auto& [w, shares] : ex.logs)
+    for (auto& share : shares) st.setup->log_gathered(std::move(share));
   ex.logs.clear();
   step_world(self, *ex.ctx, std::move(ex.due));
   publish_to_workers(self);
@@ -452,6 +479,12 @@ caf::behavior world_coordinator(coordinator_actor* self, coordinator_setup setup
       },
       [self](world_report_atom, const mail_stamp& stamp, partition_states& states) {
         self->state.reports.put(stamp, report_of(std::move(states)));
+      },
+      [self](gather_atom, const caf::actor_addr& worker, std::int64_t tick,
+             worker_gather& gathered) {
+        auto& pushed = self->state.pushed[worker];
+        pushed.tick = tick;
+        pushed.gathers.push_back(std::move(gathered));
       },
       [self](tick_atom, std::int64_t tick, std::uint8_t p, std::uint32_t) {
         auto& st = self->state;

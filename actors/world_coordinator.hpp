@@ -52,8 +52,10 @@ struct world_run_settings {
   /// Where camera nodes read the latest snapshot (snapshot_board.hpp); null for none.
   std::shared_ptr<snapshot_board> board;
   /// A distributed run's workers (actors/worker_host.hpp), whose cameras read boards of their
-  /// own. Before each publication the coordinator gathers the picks their cameras made
-  /// (`gather_atom`) and hands them to `picks_gathered`, so the local board's subscribers see
+  /// own. Before each publication the coordinator takes the picks their cameras made (from
+  /// their answers in phase world, which the clock passes on as `(gather_atom, actor_addr,
+  /// int64 tick, worker_gather)`; a worker with nothing to tick in phase world is asked,
+  /// `gather_atom`) and hands them to `picks_gathered`, so the local board's subscribers see
   /// them as in one process; after it, it sends every worker the snapshot and every pick
   /// (`board_atom`), and acknowledges its tick once all have answered.
   std::vector<caf::actor> remote_boards;
