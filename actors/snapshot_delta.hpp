@@ -12,6 +12,7 @@
 #include <span>
 #include <vector>
 
+#include "actors/wire_block.hpp"
 #include "actors/wire_world.hpp"
 #include "world/pedestrian.hpp"
 #include "world/snapshot.hpp"
@@ -21,7 +22,7 @@ namespace argus::actors {
 
 /// The fields a step changes in a walker, as bits (compared and sent as such, wire_double.hpp):
 /// position, velocity and facing (x, y each), distance to the goal, squeeze. Everything else stays
-/// as it was.
+/// as it was. A delta's vector of them crosses as one block of bytes (wire_block.hpp).
 struct moved_state {
   std::array<std::uint64_t, 8> bits{};
   friend bool operator==(const moved_state&, const moved_state&) = default;
@@ -54,7 +55,7 @@ struct subset_delta {
 
 template <class Inspector>
 typename Inspector::result_type inspect(Inspector& f, subset_delta& x) {
-  return f(x.changes, x.moved, x.whole);
+  return f(x.changes, as_block(x.moved), x.whole);
 }
 
 struct snapshot_delta {
@@ -73,7 +74,7 @@ struct snapshot_delta {
 
 template <class Inspector>
 typename Inspector::result_type inspect(Inspector& f, snapshot_delta& x) {
-  return f(x.tick, as_bits(x.time_s), x.gone, x.changes, x.moved, x.whole, x.events);
+  return f(x.tick, as_bits(x.time_s), x.gone, x.changes, as_block(x.moved), x.whole, x.events);
 }
 
 /// A delta as CAF's binary serializer writes it, written once for every worker: the middleman
