@@ -5,8 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <bit>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <vector>
 
@@ -38,6 +40,8 @@ TEST(wire_block, moved_states_cross_bit_for_bit_as_one_block) {
   ASSERT_FALSE(sink(out));
   // The count (1,000 takes two bytes) and the records' bytes, nothing per record or field.
   EXPECT_EQ(bytes.size(), 2 + 1000 * sizeof(moved_state));
+  // The records' own bytes: CAF's field by field writes each word big-endian instead.
+  EXPECT_EQ(std::memcmp(bytes.data() + 2, moves.data(), 1000 * sizeof(moved_state)), 0);
   std::vector<moved_state> back;
   caf::binary_deserializer source{nullptr, bytes};
   auto in = as_block(back);
@@ -81,6 +85,11 @@ TEST(wire_block, a_snapshot_delta_keeps_its_moves_through_a_serialisation) {
   delta.changes = {1, 1, 0};
   delta.moved = some_moves(2);
   auto bytes = serialize(delta);
+  // The delta's moves are in it as their own bytes, in one piece.
+  const auto* raw = reinterpret_cast<const char*>(delta.moved.data());
+  EXPECT_NE(std::search(bytes.bytes.begin(), bytes.bytes.end(), raw,
+                        raw + delta.moved.size() * sizeof(moved_state)),
+            bytes.bytes.end());
   const auto back = deserialize(bytes);
   EXPECT_EQ(back.tick, 7u);
   EXPECT_EQ(back.changes, delta.changes);
