@@ -52,9 +52,9 @@ struct coordinator_setup {
   std::function<std::vector<int>()> watched_cameras;
 };
 
-// A distributed tick in progress: the workers whose answers are still awaited, then the ack.
+// A distributed tick in progress: the workers whose gathers are still awaited.
 struct remote_exchange {
-  enum class stage : std::uint8_t { idle, gathering, publishing };
+  enum class stage : std::uint8_t { idle, gathering };
   stage now = stage::idle;
   std::optional<tick_context> ctx;
   caf::actor clock;
@@ -306,11 +306,10 @@ void acknowledge(coordinator_actor* self, caf::actor clock, tick_ack ack) {
 void publish_to_workers(coordinator_actor* self) {
   auto& st = self->state;
   auto& ex = st.exchange;
-  ex.now = remote_exchange::stage::publishing;
   auto delta = delta_between(st.published.get(), *st.current);
   const auto bytes = serialize(delta);
   st.published = st.current;
-  // Sent before the snapshot by the same actor, so each worker has them before it answers it.
+  // Sent before the snapshot by the same actor, so each worker has them before it reads it.
   if (st.setup->operators)
     if (auto orders = st.setup->operators->take_all_new(st.orders_sent); !orders.empty())
       for (const auto& board : st.setup->remote_boards)
@@ -321,12 +320,19 @@ void publish_to_workers(coordinator_actor* self) {
         self->send(board, display_watch_atom_v, display_watch{watched});
       st.watched_sent = std::move(watched);
     }
-  for (const auto& board : st.setup->remote_boards) ex.awaited.insert(board.address());
+  // The tick is acknowledged without waiting for the workers' answers: each worker's host
+  // reads the delta before anything the clock sends it once it has the acknowledgement (its
+  // batch of the next phase), because CAF delivers one connection's messages in the order they
+  // were sent. The workers rebuild while the acknowledgement and the clock's next batch travel:
+  // a round trip less a tick. Only an answer that is a failure is acted on.
   for (const auto& board : st.setup->remote_boards)
     self->request(board, caf::infinite, board_atom_v, bytes, ex.picks)
-        .then([self, addr = board.address()](done_atom) { worker_answered(self, addr); },
+        .then([](done_atom) {},
               [self, addr = board.address()](caf::error& err) { worker_failed(self, addr, err); });
-  if (ex.awaited.empty()) worker_answered(self, caf::actor_addr{});
+  ex.now = remote_exchange::stage::idle;
+  ex.picks.clear();
+  acknowledge(self, std::exchange(ex.clock, caf::actor{}), std::move(*ex.ctx).finish());
+  ex.ctx.reset();
 }
 
 // What worker `w`'s cameras did, from its answer in phase world or to `gather_atom`.
@@ -402,12 +408,6 @@ void worker_answered(coordinator_actor* self, const caf::actor_addr& board) {
       return;
     case remote_exchange::stage::gathering:
       step_and_publish(self);
-      return;
-    case remote_exchange::stage::publishing:
-      ex.now = remote_exchange::stage::idle;
-      ex.picks.clear();
-      acknowledge(self, std::exchange(ex.clock, caf::actor{}), std::move(*ex.ctx).finish());
-      ex.ctx.reset();
       return;
   }
 }

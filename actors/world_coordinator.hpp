@@ -57,7 +57,9 @@ struct world_run_settings {
   /// int64 tick, worker_gather)`; a worker with nothing to tick in phase world is asked,
   /// `gather_atom`) and hands them to `picks_gathered`, so the local board's subscribers see
   /// them as in one process; after it, it sends every worker the snapshot and every pick
-  /// (`board_atom`), and acknowledges its tick once all have answered.
+  /// (`board_atom`), and acknowledges its tick at once: a worker reads them before its next
+  /// batch from the clock, which comes over the same connection after them. A worker's answer
+  /// is acted on only when it is a failure.
   std::vector<caf::actor> remote_boards;
   std::function<void(const std::vector<eval::task_origin>&)> picks_gathered;
   /// The workers' cameras' poses, gathered with their picks when the run records video; null
