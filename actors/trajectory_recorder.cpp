@@ -53,12 +53,17 @@ std::shared_ptr<trajectory_file> open_trajectories(const std::filesystem::path& 
   return std::make_shared<trajectory_file>(path);
 }
 
+namespace {
+
+// Gives both files their names with what they hold, and releases `file`.
 void finish_trajectories(std::shared_ptr<trajectory_file>& file) {
   if (!file) return;
   file->rows.finish();
   file->looks.finish();
   file.reset();
 }
+
+}  // namespace
 
 void write_trajectories(std::shared_ptr<trajectory_file>& file, const world::snapshot& frame,
                         std::int64_t end_tick) {

@@ -25,9 +25,6 @@ std::shared_ptr<trajectory_file> open_trajectories(const std::filesystem::path& 
 void write_trajectories(std::shared_ptr<trajectory_file>& file, const world::snapshot& frame,
                         std::int64_t end_tick);
 
-/// Gives both files their names with what they hold, and releases `file`.
-void finish_trajectories(std::shared_ptr<trajectory_file>& file);
-
 /// Spawns the actor that writes `file` from the world's snapshots, on a thread of its own
 /// (docs/world.md, "The crowd as actors"), linked to `owner`, the world coordinator.
 ///
