@@ -2,6 +2,7 @@
 #include <string>
 
 #include "CLI/CLI.hpp"
+#include "apps/allocator_settings.hpp"
 #include "apps/commands.hpp"
 #ifdef ARGUS_WITH_PYTHON
 #include "python/embed.hpp"
@@ -38,6 +39,7 @@ std::string message_of(const CLI::ParseError& e, CLI::App* command) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  argus::apps::keep_freed_memory_mapped();
   CLI::App app{"argus: smart camera networks in virtual reality", "argus"};
   app.set_version_flag("--version", std::string("argus ") + ARGUS_VERSION);
   app.require_subcommand(1);

@@ -22,19 +22,6 @@ namespace {
 constexpr float unreachable = std::numeric_limits<float>::infinity();
 
 /// Even-odd point-in-polygon test.
-bool inside_polygon(const std::vector<vec2>& polygon, const vec2& p) {
-  bool inside = false;
-  for (std::size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
-    const vec2& a = polygon[i];
-    const vec2& b = polygon[j];
-    if ((a.y() > p.y()) != (b.y() > p.y()) &&
-        p.x() < (b.x() - a.x()) * (p.y() - a.y()) / (b.y() - a.y()) + a.x()) {
-      inside = !inside;
-    }
-  }
-  return inside;
-}
-
 bool segments_intersect(const vec2& p, const vec2& q, const segment& s) {
   auto cross = [](const vec2& a, const vec2& b) { return a.x() * b.y() - a.y() * b.x(); };
   const vec2 r = q - p;
@@ -95,6 +82,7 @@ station::station(layout plan, navigation_settings settings)
   has_speed_factors_ = std::any_of(plan_.regions.begin(), plan_.regions.end(),
                                    [](const region& r) { return r.speed_factor != 1.0; });
   build_segments();
+  solids_ = solid_index(plan_, counters_);
   build_segment_index();
   build_grid();
   if (settings_.fields) build_fields();
@@ -173,13 +161,7 @@ double station::wall_clearance(const vec2& p) const {
 bool station::walkable(const vec2& p) const {
   const region* r = region_at(p);
   if (r == nullptr || r->kind == region_kind::tracks) return false;
-  for (const auto& o : plan_.obstacles) {
-    if (inside_polygon(o.polygon, p)) return false;
-  }
-  for (const auto* c : counters_) {
-    if (c->footprint.contains(p)) return false;
-  }
-  return true;
+  return !solids_.inside_solid(p);
 }
 
 bool station::fits(const vec2& p, double radius_m) const {

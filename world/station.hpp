@@ -10,6 +10,7 @@
 
 #include "config/scenario_error.hpp"
 #include "world/layout.hpp"
+#include "world/solid_index.hpp"
 
 namespace argus::world {
 
@@ -185,6 +186,7 @@ class station {
   navigation_settings settings_;
   std::vector<segment> segments_;
   std::vector<const service_counter*> counters_;
+  solid_index solids_;
   std::vector<seat> seats_;
   // Segment index: uniform grid of `index_cell_m` cells, CSR layout.
   static constexpr double index_cell_m = 1.0;
