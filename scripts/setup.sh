@@ -8,6 +8,7 @@ ARGUS_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 argus_packages=(
   build-essential cmake ninja-build ccache pkg-config git
   libcaf-dev libeigen3-dev libopencv-dev libmimalloc-dev libpcg-cpp-dev
+  libxxhash-dev  # the field cache's checksum (world/field_cache.cpp)
   libssl-dev openssl iproute2  # TLS between processes; the tests' certificates and namespaces
   libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri
   libyaml-cpp-dev libcli11-dev libspdlog-dev libfmt-dev nlohmann-json3-dev

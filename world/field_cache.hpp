@@ -25,7 +25,8 @@ class field_cache {
   /// Bump when the fields computed from the same grid and sources change (the step costs of
   /// station::dijkstra, say): files of another version are never read.
   /// `station_test.the_fields_of_a_fixed_layout_are_pinned` fails when they change.
-  static constexpr std::uint32_t version = 1;
+  /// 2: the contents' checksum is XXH3's 128 bits instead of SHA-256.
+  static constexpr std::uint32_t version = 2;
   /// The most the cache keeps; the least recently used files go first.
   static constexpr std::uint64_t default_max_bytes = std::uint64_t{4} << 30;
 
