@@ -1,5 +1,6 @@
 #include "actors/snapshot_delta.hpp"
 
+#include <algorithm>
 #include <bit>
 #include <chrono>
 #include <span>
@@ -220,21 +221,38 @@ subset_delta subset_between(const world::snapshot& before, std::span<const world
   return d;
 }
 
-std::vector<pedestrian_state> apply_subset(const world::snapshot& before, subset_delta delta) {
+std::vector<std::vector<pedestrian_state>> apply_subsets(const world::snapshot& before,
+                                                         std::vector<subset_delta> deltas) {
   const auto old = before.pedestrians();
-  if (delta.changes.size() != old.size())
-    out_of_step(
-        fmt::format("a partition's states are for {} pedestrians, the snapshot of tick {} "
-                    "has {}",
-                    delta.changes.size(), before.tick(), old.size()));
-  std::vector<pedestrian_state> out;
-  out.reserve(delta.moved.size() + delta.whole.size());
-  record_reader records(delta.moved, delta.whole);
+  for (const auto& delta : deltas)
+    if (delta.changes.size() != old.size())
+      out_of_step(
+          fmt::format("a partition's states are for {} pedestrians, the snapshot of tick {} "
+                      "has {}",
+                      delta.changes.size(), before.tick(), old.size()));
+  std::vector<std::vector<pedestrian_state>> out(deltas.size());
+  std::vector<record_reader> records;
+  records.reserve(deltas.size());
+  for (std::size_t d = 0; d < deltas.size(); ++d) {
+    const auto& changes = deltas[d].changes;
+    out[d].reserve(static_cast<std::size_t>(std::count_if(
+        changes.begin(), changes.end(), [](std::uint8_t c) { return c != subset_delta::absent; })));
+    records.emplace_back(deltas[d].moved, deltas[d].whole);
+  }
+  // One pass over `before` for all the subsets: each on its own reached into it at scattered
+  // places, a cache miss per pedestrian (about 0.8 ms a tick for the large station's 10,000).
   for (std::size_t j = 0; j < old.size(); ++j)
-    if (delta.changes[j] != subset_delta::absent)
-      out.push_back(records.after(static_cast<pedestrian_change>(delta.changes[j]), old[j]));
-  records.all_read();
+    for (std::size_t d = 0; d < deltas.size(); ++d)
+      if (const auto c = deltas[d].changes[j]; c != subset_delta::absent)
+        out[d].push_back(records[d].after(static_cast<pedestrian_change>(c), old[j]));
+  for (const auto& r : records) r.all_read();
   return out;
+}
+
+std::vector<pedestrian_state> apply_subset(const world::snapshot& before, subset_delta delta) {
+  std::vector<subset_delta> one;
+  one.push_back(std::move(delta));
+  return std::move(apply_subsets(before, std::move(one)).front());
 }
 
 }  // namespace argus::actors

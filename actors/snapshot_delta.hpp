@@ -107,6 +107,11 @@ subset_delta subset_between(const world::snapshot& before, std::span<const world
 std::vector<world::pedestrian_state> apply_subset(const world::snapshot& before,
                                                   subset_delta delta);
 
+/// The states each of `deltas` describes (apply_subset for each), read in one pass over
+/// `before`. Throws std::invalid_argument when one was not made from `before`.
+std::vector<std::vector<world::pedestrian_state>> apply_subsets(const world::snapshot& before,
+                                                                std::vector<subset_delta> deltas);
+
 /// The snapshot `delta` describes, rebuilt on `where` from `before` (null for an empty world).
 /// Throws std::invalid_argument when the delta was not made from `before`.
 std::shared_ptr<const world::snapshot> apply_delta(const world::station& where,

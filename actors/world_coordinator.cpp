@@ -144,13 +144,24 @@ partition_report report_of(partition_states states) {
   return out;
 }
 
-void read_kept(partition_report& report, const world::snapshot& before) {
-  if (!report.kept) return;
-  auto kept = apply_subset(before, std::move(*report.kept));
-  report.kept.reset();
-  report.result.pedestrians.resize(kept.size());
-  for (std::size_t k = 0; k < kept.size(); ++k)
-    report.result.pedestrians[k].state = std::move(kept[k]);
+// The states the workers' partitions kept, read back from the snapshot they stepped from, all
+// the reports in one pass over it (apply_subsets).
+void read_kept(const std::vector<partition_report*>& reports, const world::snapshot& before) {
+  std::vector<partition_report*> from_workers;
+  std::vector<subset_delta> deltas;
+  for (auto* report : reports) {
+    if (!report->kept) continue;
+    from_workers.push_back(report);
+    deltas.push_back(std::move(*report->kept));
+    report->kept.reset();
+  }
+  if (deltas.empty()) return;
+  auto kept = apply_subsets(before, std::move(deltas));
+  for (std::size_t r = 0; r < from_workers.size(); ++r) {
+    auto& pedestrians = from_workers[r]->result.pedestrians;
+    pedestrians.resize(kept[r].size());
+    for (std::size_t k = 0; k < kept[r].size(); ++k) pedestrians[k].state = std::move(kept[r][k]);
+  }
 }
 
 // The partitions of a lost worker step here from now on, from the pedestrians their shadows
@@ -185,13 +196,17 @@ void step_world(caf::stateful_actor<world_coordinator_state>* self, tick_context
   std::vector<bool> reported_by(count, false);
   std::vector<std::optional<std::vector<world::pedestrian>>> checkpoints(count);
   std::size_t reported = 0;
+  std::vector<partition_report*> taken;
   for (auto& [stamp, report] : due) {
     // An adopted partition's last report, sent before its worker went, is stepped again here.
     if (report.index >= count || st.adopted.count(report.index) != 0) continue;
-    read_kept(report, *st.current);
-    results[report.index] = std::move(report.result);
-    checkpoints[report.index] = std::move(report.whole);
-    reported_by[report.index] = true;
+    taken.push_back(&report);
+  }
+  read_kept(taken, *st.current);
+  for (auto* report : taken) {
+    results[report->index] = std::move(report->result);
+    checkpoints[report->index] = std::move(report->whole);
+    reported_by[report->index] = true;
     ++reported;
   }
   for (const auto& [i, pedestrians] : st.adopted) {

@@ -208,5 +208,42 @@ TEST(snapshot_delta, a_partitions_kept_pedestrians_cross_as_changes) {
   EXPECT_THROW(subset_between(fewer, kept), std::invalid_argument);
 }
 
+// The coordinator reads every worker partition's report in one pass over the snapshot they
+// stepped from: each subset comes back as it would alone, whoever else holds the pedestrians
+// around its own.
+TEST(snapshot_delta, several_partitions_subsets_are_read_together_as_each_alone) {
+  auto station = world::station::load(world::layout_path(delta_scenario()));
+  std::vector<world::pedestrian_state> everyone;
+  for (int id = 1; id <= 30; ++id) everyone.push_back(walker_at(id, 0.5 * id));
+  world::snapshot before(*station, 1, std::chrono::duration<double>{0.1}, everyone);
+  // Three partitions that hold every third pedestrian, interleaved in id order; the third
+  // holds none from 20 on. Some moved, some changed, some as they were.
+  std::vector<std::vector<world::pedestrian>> held(3);
+  for (const auto& state : everyone) {
+    const auto part = static_cast<std::size_t>(state.id % 3);
+    if (part == 2 && state.id >= 20) continue;
+    auto now = state;
+    if (state.id % 4 == 0) now.position.x() += 0.1;
+    if (state.id % 7 == 0) now.goal_serial += 1;
+    held[part].push_back(whole(now));
+  }
+  std::vector<subset_delta> deltas;
+  for (const auto& kept : held) deltas.push_back(subset_between(before, kept));
+  const auto together = apply_subsets(before, deltas);
+  ASSERT_EQ(together.size(), 3u);
+  for (std::size_t part = 0; part < 3; ++part) {
+    const auto alone = apply_subset(before, deltas[part]);
+    ASSERT_EQ(together[part].size(), held[part].size()) << part;
+    ASSERT_EQ(alone.size(), held[part].size()) << part;
+    for (std::size_t k = 0; k < held[part].size(); ++k) {
+      EXPECT_TRUE(together[part][k] == held[part][k].state) << part << " " << k;
+      EXPECT_TRUE(alone[k] == held[part][k].state) << part << " " << k;
+    }
+  }
+  // One subset that does not fit refuses them all.
+  deltas[1].changes.pop_back();
+  EXPECT_THROW(apply_subsets(before, deltas), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace argus::actors::testing
