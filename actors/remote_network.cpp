@@ -87,39 +87,76 @@ void greet_workers(caf::actor_system& system, const std::vector<worker_contact>&
   }
 }
 
+struct pending_set_up::requests {
+  explicit requests(caf::actor_system& system) : self(system) {}
+  caf::scoped_actor self;
+  using handle = decltype(std::declval<caf::scoped_actor&>()->request(
+      std::declval<caf::actor>(), std::chrono::milliseconds{}, worker_setup_atom_v,
+      std::declval<worker_setup>()));
+  std::vector<handle> pending;
+  std::vector<std::vector<link_placement>> links_of;
+  std::vector<std::optional<std::size_t>> host_of_link;
+  worker_loss on_loss = worker_loss::end_run;
+};
+
+pending_set_up::pending_set_up() = default;
+pending_set_up::pending_set_up(pending_set_up&&) noexcept = default;
+pending_set_up& pending_set_up::operator=(pending_set_up&&) noexcept = default;
+pending_set_up::~pending_set_up() = default;
+
+pending_set_up ask_workers_to_set_up(caf::actor_system& system, const config::scenario& scenario,
+                                     const protocol::topology& topo,
+                                     const std::vector<worker_contact>& workers, worker_setup setup,
+                                     worker_loss on_loss, const std::vector<bool>& steps_crowd) {
+  pending_set_up out;
+  out.asked = std::make_unique<pending_set_up::requests>(system);
+  auto& asked = *out.asked;
+  asked.on_loss = on_loss;
+  const auto where = place_cameras(scenario, workers.size());
+  // Each worker's links, in topology order; the coordinator's (`--on-worker-loss crash-nodes`)
+  // are spawned by spawn_remote_network.
+  asked.links_of.resize(workers.size());
+  for (std::size_t i = 0; i < topo.links().size(); ++i) {
+    auto [a, b] = topo.links()[i];
+    asked.host_of_link.push_back(place_link(where, a, b, on_loss));
+    if (asked.host_of_link.back()) asked.links_of[*asked.host_of_link.back()].push_back({i, a, b});
+  }
+  for (std::size_t w = 0; w < workers.size(); ++w) {
+    auto mine = setup;
+    mine.links = asked.links_of[w];
+    mine.steps_crowd = w < steps_crowd.size() && steps_crowd[w];
+    asked.pending.push_back(asked.self->request(workers[w].host,
+                                                std::chrono::milliseconds(worker_set_up_timeout),
+                                                worker_setup_atom_v, std::move(mine)));
+  }
+  return out;
+}
+
 network_directory spawn_remote_network(caf::actor_system& system, const config::scenario& scenario,
                                        const protocol::topology& topo, const caf::actor& clock,
                                        const std::vector<worker_contact>& workers,
-                                       worker_setup setup, worker_loss on_loss,
-                                       const std::vector<bool>& steps_crowd) {
+                                       pending_set_up asked_for) {
   const auto timeout = std::chrono::milliseconds(worker_setup_timeout);
   const auto where = place_cameras(scenario, workers.size());
-  // Each worker's links, in topology order, and where their handles go; the coordinator's
-  // (`--on-worker-loss crash-nodes`) are spawned here.
-  std::vector<std::vector<link_placement>> links_of(workers.size());
-  std::vector<std::optional<std::size_t>> host_of_link;
+  auto& asked = *asked_for.asked;
+  auto& self = asked.self;
+  std::vector<std::vector<caf::actor>> spawned_links;
+  for (std::size_t w = 0; w < workers.size(); ++w)
+    spawned_links.push_back(collect<std::vector<caf::actor>>(
+        self, workers[w], std::chrono::milliseconds(worker_set_up_timeout), "setting up",
+        asked.pending[w]));
   std::vector<caf::actor> handles(topo.links().size());
   std::shared_ptr<const protocol::link_model> model;
   for (std::size_t i = 0; i < topo.links().size(); ++i) {
+    if (asked.host_of_link[i]) continue;
     auto [a, b] = topo.links()[i];
-    host_of_link.push_back(place_link(where, a, b, on_loss));
-    if (host_of_link.back()) {
-      links_of[*host_of_link.back()].push_back({i, a, b});
-      continue;
-    }
     if (!model) model = make_link_model(scenario);
     handles[i] = spawn_link(system, scenario, model, i, a, b);
   }
   network_directory net;
-  caf::scoped_actor self{system};
   std::vector<std::pair<caf::actor, participant_info>> links;
-  const auto spawned_links =
-      ask_all<std::vector<caf::actor>>(self, workers, timeout, "setting up", [&](std::size_t w) {
-        auto mine = setup;
-        mine.links = links_of[w];
-        mine.steps_crowd = w < steps_crowd.size() && steps_crowd[w];
-        return std::make_tuple(worker_setup_atom_v, std::move(mine));
-      });
+  const auto& links_of = asked.links_of;
+  const auto& host_of_link = asked.host_of_link;
   for (std::size_t w = 0; w < workers.size(); ++w) {
     const auto& spawned = spawned_links[w];
     if (spawned.size() != links_of[w].size())

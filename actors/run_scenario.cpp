@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <stdexcept>
 #include <thread>
 
@@ -125,6 +126,31 @@ caf::behavior anchor_behavior(caf::event_based_actor*, int) {
   return {[](done_atom) {}};
 }
 
+// Releases the workers' set-ups and ends the anchor they watch, unless dismissed: a run that
+// fails before its network is spawned must leave nothing hosted on them, and no actor here that
+// the actor system would wait for.
+class set_up_guard {
+ public:
+  set_up_guard(caf::actor_system& system, const std::vector<worker_contact>& workers,
+               const caf::actor& anchor)
+      : system_(system), workers_(workers), anchor_(anchor) {}
+  set_up_guard(const set_up_guard&) = delete;
+  set_up_guard& operator=(const set_up_guard&) = delete;
+  ~set_up_guard() {
+    if (dismissed_ || workers_.empty()) return;
+    if (anchor_) caf::anon_send_exit(anchor_, caf::exit_reason::user_shutdown);
+    caf::scoped_actor self{system_};
+    for (const auto& w : workers_) self->send(w.host, release_atom_v);
+  }
+  void dismiss() { dismissed_ = true; }
+
+ private:
+  caf::actor_system& system_;
+  const std::vector<worker_contact>& workers_;
+  const caf::actor& anchor_;
+  bool dismissed_ = false;
+};
+
 // The world's first snapshot, which the crowd's spawner published before any tick, on every
 // worker's board too.
 void share_first_snapshot(caf::actor_system& system, const std::vector<worker_contact>& workers,
@@ -176,6 +202,27 @@ run_outcome run_scenario(const config::scenario& scenario, const run_options& op
     workers = pool_of_workers->connect(system);
     greet_workers(system, workers, std::chrono::seconds(10));
   }
+  const protocol::topology topo(scenario);
+  // The workers set up side by side with this process: each parses the scenario and loads the
+  // station while this one loads its own (docs/distributed.md, "Starting a run").
+  // Lives until the workers have handed over their logs: they watch it, and end what they
+  // host when it goes (with this process or its connection).
+  caf::actor anchor;
+  // Which worker steps each crowd partition (none: here).
+  std::vector<std::optional<std::size_t>> partition_workers;
+  std::vector<bool> steps_crowd(workers.size(), false);
+  pending_set_up set_up;
+  if (!workers.empty()) {
+    anchor = system.spawn(anchor_behavior, 0);
+    partition_workers = place_partitions(scenario, workers.size());
+    for (const auto& w : partition_workers)
+      if (w) steps_crowd[*w] = true;
+    set_up = ask_workers_to_set_up(system, scenario, topo, workers,
+                                   setup_for_workers(scenario, options, anchor),
+                                   options.on_worker_loss, steps_crowd);
+  }
+  // Until the network is spawned: a run that fails leaves nothing hosted on the workers.
+  set_up_guard release_set_up(system, workers, anchor);
 
   run_outcome outcome;
   outcome.output_dir = output_dir_of(scenario);
@@ -312,7 +359,6 @@ run_outcome run_scenario(const config::scenario& scenario, const run_options& op
   cs.tick_seconds = tick_seconds;
   cs.speed = scenario.run.speed;
   if (live) cs.pacing = std::shared_ptr<pacing>(live, &live->pace);
-  const protocol::topology topo(scenario);
   // Links are never ticked: the clock's round trips are the cameras'.
   cs.own_thread = clock_on_own_thread(threads, scenario.cameras.size());
   // Each worker ticks its own cameras and answers for them at once.
@@ -323,10 +369,6 @@ run_outcome run_scenario(const config::scenario& scenario, const run_options& op
   // Joins and link attachments go out from this thread, in this order, before `start`:
   // enqueued in program order, they all reach their receivers before the first tick.
   auto board = cameras_world->board;
-  // Lives until the workers have handed over their logs: they watch it, and end what they
-  // host when it goes (with this process or its connection).
-  caf::actor anchor;
-  if (!workers.empty()) anchor = system.spawn(anchor_behavior, 0);
   network_directory net;
   // Nothing has started when a worker refuses: end what did spawn, here and on the workers.
   const auto abandon = [&] {
@@ -335,28 +377,20 @@ run_outcome run_scenario(const config::scenario& scenario, const run_options& op
     caf::scoped_actor self{system};
     for (const auto& w : workers) self->send(w.host, release_atom_v);
   };
-  // Which worker steps each crowd partition (none: here).
-  std::vector<bool> steps_crowd(workers.size(), false);
-  if (!workers.empty()) {
-    const auto partitions = place_partitions(scenario, workers.size());
-    for (const auto& w : partitions) {
-      world_settings.partition_hosts.push_back(
-          w ? partition_host{workers[*w].host, workers[*w].name} : partition_host{});
-      if (w) steps_crowd[*w] = true;
-    }
-  }
+  for (const auto& w : partition_workers)
+    world_settings.partition_hosts.push_back(w ? partition_host{workers[*w].host, workers[*w].name}
+                                               : partition_host{});
   if (workers.empty()) {
     net = spawn_network(system, scenario, topo, clock, std::move(cameras_world));
   } else {
     try {
-      net = spawn_remote_network(system, scenario, topo, clock, workers,
-                                 setup_for_workers(scenario, options, anchor),
-                                 options.on_worker_loss, steps_crowd);
+      net = spawn_remote_network(system, scenario, topo, clock, workers, std::move(set_up));
     } catch (...) {
       abandon();
       throw;
     }
   }
+  release_set_up.dismiss();
   auto script = spawn_scenario_script(system, scenario, clock, log, live, operators);
   caf::anon_send(clock, join_atom_v, script, script_participant(live != nullptr));
   auto faults = spawn_fault_injector(system, scenario, clock, std::move(net), live);

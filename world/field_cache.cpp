@@ -1,6 +1,8 @@
 #include "world/field_cache.hpp"
 
+#include <fcntl.h>
 #include <openssl/evp.h>
+#include <sys/file.h>
 #include <unistd.h>
 // Debian's libxxhash-dev, inlined: the checksum of the fields' bytes, not of the key.
 #define XXH_INLINE_ALL
@@ -9,6 +11,7 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <cerrno>
 #include <chrono>
 #include <cstdlib>
 #include <cstring>
@@ -17,6 +20,7 @@
 #include <system_error>
 #include <thread>
 #include <tuple>
+#include <utility>
 
 #include "fmt/format.h"
 
@@ -190,6 +194,42 @@ std::string field_cache::store(const std::string& key,
   }
   trim(file);
   return {};
+}
+
+field_cache::compute_lock::compute_lock(const std::filesystem::path& dir) {
+  std::error_code error;
+  fs::create_directories(dir, error);
+  if (error) return;
+  fd_ = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd_ < 0) return;
+  int locked;
+  do {
+    locked = ::flock(fd_, LOCK_EX);
+  } while (locked != 0 && errno == EINTR);
+  if (locked != 0) {
+    ::close(fd_);
+    fd_ = -1;
+  }
+}
+
+field_cache::compute_lock::compute_lock(compute_lock&& other) noexcept
+    : fd_(std::exchange(other.fd_, -1)) {}
+
+field_cache::compute_lock& field_cache::compute_lock::operator=(compute_lock&& other) noexcept {
+  if (this != &other) {
+    if (fd_ >= 0) ::close(fd_);
+    fd_ = std::exchange(other.fd_, -1);
+  }
+  return *this;
+}
+
+// Closing the descriptor releases the flock.
+field_cache::compute_lock::~compute_lock() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
+field_cache::compute_lock field_cache::lock_to_compute() const {
+  return compute_lock(dir_);
 }
 
 void field_cache::trim(const std::filesystem::path& keep) const {

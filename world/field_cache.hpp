@@ -53,6 +53,33 @@ class field_cache {
   /// The file `key` is kept in.
   std::filesystem::path file_of(const std::string& key) const;
 
+  /// The right to compute fields for this cache, held by one process (or thread) at a time: an
+  /// exclusive `flock` on the cache's folder, released when it goes. A distributed run's
+  /// coordinator and its workers load the station at once; when the fields are not yet kept,
+  /// the first to take this computes them and the others wait, then read them, instead of each
+  /// computing them on the same cores. Where the folder cannot be made or locked, it holds
+  /// nothing and waits for nothing: a cache that cannot be locked costs time, never a run.
+  class compute_lock {
+   public:
+    compute_lock() = default;
+    explicit compute_lock(const std::filesystem::path& dir);
+    compute_lock(compute_lock&& other) noexcept;
+    compute_lock& operator=(compute_lock&& other) noexcept;
+    compute_lock(const compute_lock&) = delete;
+    compute_lock& operator=(const compute_lock&) = delete;
+    ~compute_lock();
+    /// Whether the folder is locked by this (false where it could not be).
+    bool held() const noexcept { return fd_ >= 0; }
+
+   private:
+    int fd_ = -1;
+  };
+
+  /// Waits until no other process or thread computes fields for this cache, and holds that
+  /// right until the lock goes. Load again after taking it: the one waited for may have stored
+  /// the very fields wanted.
+  compute_lock lock_to_compute() const;
+
  private:
   void trim(const std::filesystem::path& keep) const;
 

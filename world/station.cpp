@@ -275,6 +275,13 @@ std::vector<std::vector<float>> station::cached_or_computed_fields(
     fields_from_cache_ = true;
     return std::move(*kept);
   }
+  // One process computes, the others wait and read what it stored (a distributed run's
+  // processes load the station side by side).
+  const auto computing = cache.lock_to_compute();
+  if (auto kept = cache.load(hex, sources.size(), blocked_.size())) {
+    fields_from_cache_ = true;
+    return std::move(*kept);
+  }
   auto fields = distance_fields(sources);
   field_cache_problem_ = cache.store(hex, fields);
   return fields;

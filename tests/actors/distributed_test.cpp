@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <opencv2/videoio.hpp>
 #include <optional>
@@ -400,6 +401,26 @@ TEST(distributed, what_one_process_cannot_share_is_refused_before_the_run) {
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("sensing.group_geometry"), std::string::npos) << e.what();
   }
+}
+
+// The workers set up while the coordinator loads its station and spawns its actors: a failure
+// here after they were asked ends the run at once with its own message, not a worker's, and the
+// actor system does not wait for what they were asked to host.
+TEST(distributed, a_run_that_fails_here_while_the_workers_set_up_ends_with_its_own_error) {
+  const auto dir = scratch("fails_here");
+  std::filesystem::create_directories(dir);
+  auto s = replay_faults(dir / "a file, not a folder");
+  { std::ofstream(s.run.output_dir) << "in the way"; }
+  run_options options;
+  options.workers = std::make_shared<local_workers>(2);
+  options.video = true;
+  try {
+    run_scenario(s, options);
+    FAIL() << "a video file that cannot be written was accepted";
+  } catch (const std::exception& e) {
+    EXPECT_NE(std::string(e.what()).find("a file, not a folder"), std::string::npos) << e.what();
+  }
+  std::filesystem::remove_all(dir);
 }
 
 TEST(distributed, placement_gives_every_worker_a_run_of_neighbours) {

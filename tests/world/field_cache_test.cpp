@@ -7,13 +7,17 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <latch>
+#include <memory>
 #include <optional>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "world/station.hpp"
@@ -214,4 +218,54 @@ TEST(field_cache, the_fields_of_a_fixed_layout_are_pinned) {
 }
 
 }  // namespace
+// A distributed run's processes load the station at once: while one computes the fields, the
+// others wait for it, then read what it stored.
+TEST(field_cache, a_station_waits_for_the_one_computing_then_reads_what_it_stored) {
+  scratch dir("waits");
+  scratch elsewhere("waits_elsewhere");
+  const station computed{hall(), cached_in(elsewhere.path())};
+  const auto stored = files_in(elsewhere.path()).at(0);
+  std::atomic<bool> loaded{false};
+  std::unique_ptr<station> waiting;
+  {
+    auto computing = field_cache(dir.path()).lock_to_compute();
+    ASSERT_TRUE(computing.held());
+    std::jthread loader([&] {
+      waiting = std::make_unique<station>(hall(), cached_in(dir.path()));
+      loaded = true;
+    });
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    EXPECT_FALSE(loaded) << "a station computed its fields while another held the right to";
+    // What the one computing stores before it lets go.
+    fs::copy_file(stored, dir.path() / stored.filename(), fs::copy_options::overwrite_existing);
+    computing = {};
+    loader.join();
+  }
+  ASSERT_TRUE(waiting);
+  EXPECT_TRUE(waiting->fields_from_cache());
+  EXPECT_EQ(digest_of(*waiting), digest_of(computed));
+}
+
+TEST(field_cache, of_stations_loaded_at_once_one_computes_and_the_others_read) {
+  scratch dir("at_once");
+  constexpr std::size_t at_once = 4;
+  std::vector<std::unique_ptr<station>> loaded(at_once);
+  {
+    std::latch go(at_once);
+    std::vector<std::jthread> loaders;
+    for (std::size_t i = 0; i < at_once; ++i)
+      loaders.emplace_back([&, i] {
+        go.arrive_and_wait();
+        loaded[i] = std::make_unique<station>(hall(), cached_in(dir.path()));
+      });
+  }
+  std::size_t computed = 0;
+  for (const auto& s : loaded) {
+    ASSERT_TRUE(s);
+    if (!s->fields_from_cache()) ++computed;
+    EXPECT_EQ(digest_of(*s), digest_of(*loaded.front()));
+  }
+  EXPECT_EQ(computed, 1u);
+}
+
 }  // namespace argus::world
