@@ -186,7 +186,7 @@ class clock_actor : public caf::event_based_actor {
         for (auto* e : due_) {
           if (!e->info.host.empty())
             if (auto sub = batches_.find(e->info.host); sub != batches_.end()) {
-              sub->second.push_back({e->info.id, e->relayed});
+              sub->second.push_back({e->info.id, e->relayed, 0});
               e->relayed = 0;
               continue;
             }

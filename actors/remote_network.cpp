@@ -214,6 +214,7 @@ void finish_workers(caf::actor_system& system, const std::vector<worker_contact>
                     eval::observation_log& log, std::chrono::milliseconds timeout, bool streamed,
                     const std::function<void(live_display)>& shown) {
   caf::scoped_actor self{system};
+  std::vector<const worker_contact*> live;
   for (const auto& w : workers) {
     // A worker already lost (the run failed for it) is skipped at once rather than waited for:
     // monitoring a proxy whose node is gone reports it down immediately.
@@ -230,14 +231,37 @@ void finish_workers(caf::actor_system& system, const std::vector<worker_contact>
       continue;
     }
     self->demonitor(w.host);
-    try {
-      // The last tick's turns: no gather follows them.
-      if (shown)
-        shown(ask<live_display>(self, w, timeout, "showing its cameras' last turns",
+    live.push_back(&w);
+  }
+  // The last tick's turns: no gather follows them.
+  if (shown)
+    for (const auto* w : live) {
+      try {
+        shown(ask<live_display>(self, *w, timeout, "showing its cameras' last turns",
                                 take_display_atom_v));
-      log.add_worker_share(ask<eval::observation_log::contents>(
-          self, w, timeout, "handing over its log", take_log_atom_v));
-      ask<done_atom>(self, w, timeout, "releasing the run", release_atom_v);
+      } catch (const std::exception& e) {
+        spdlog::warn("{}", e.what());
+      }
+    }
+  // Every worker is asked at once, so they write their logs side by side; they are added in
+  // the workers' order, as one process records them.
+  using log_request = decltype(self->request(caf::actor{}, timeout, take_log_atom_v));
+  std::vector<log_request> logs;
+  for (const auto* w : live) logs.push_back(self->request(w->host, timeout, take_log_atom_v));
+  for (std::size_t i = 0; i < live.size(); ++i) {
+    try {
+      log.add_worker_share(collect<eval::observation_log::contents>(
+          self, *live[i], timeout, "handing over its log", logs[i]));
+    } catch (const std::exception& e) {
+      spdlog::warn("{}", e.what());
+    }
+  }
+  using release_request = decltype(self->request(caf::actor{}, timeout, release_atom_v));
+  std::vector<release_request> releases;
+  for (const auto* w : live) releases.push_back(self->request(w->host, timeout, release_atom_v));
+  for (std::size_t i = 0; i < live.size(); ++i) {
+    try {
+      collect<done_atom>(self, *live[i], timeout, "releasing the run", releases[i]);
     } catch (const std::exception& e) {
       spdlog::warn("{}", e.what());
     }

@@ -1,10 +1,17 @@
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "actors/sim_event.hpp"
+#include "actors/wire_block.hpp"
+#include "caf/deserializer.hpp"
+#include "caf/error.hpp"
+#include "caf/sec.hpp"
+#include "caf/serializer.hpp"
 
 namespace argus::actors {
 
@@ -46,11 +53,106 @@ typename Inspector::result_type inspect(Inspector& f, tick_ack& x) {
 struct batched_tick {
   std::uint64_t participant = 0;
   std::uint32_t relayed = 0;
+  std::uint32_t unused = 0;  // no padding: a batch crosses as its bytes
 };
 
 template <class Inspector>
 typename Inspector::result_type inspect(Inspector& f, batched_tick& x) {
   return f(x.participant, x.relayed);
+}
+
+// A sub-clock's batches and answers cross once a phase per worker, with a record for each of its
+// cameras (512 of the large station's 1,024 on each of two workers): CAF would write and read
+// them field by field, through a virtual call each, on every tick's critical path. They cross
+// as blocks of bytes instead (wire_block.hpp). Found by argument-dependent lookup, these take
+// the place of CAF's own sequence for the two vectors wherever the types are known.
+
+/// A batch: its records' bytes.
+template <class Inspector>
+typename Inspector::result_type inspect(Inspector& f, std::vector<batched_tick>& x) {
+  if constexpr (std::is_base_of_v<caf::serializer, Inspector> ||
+                std::is_base_of_v<caf::deserializer, Inspector>) {
+    return f(as_block(x));
+  } else {
+    auto count = x.size();  // not a wire: printing, say
+    return f(count);
+  }
+}
+
+/// What an answer's acknowledgement has whatever it carries, as it crosses; how many of the
+/// woken, relayed, events and stop_run characters that follow the block are its.
+struct ack_head {
+  std::uint64_t participant = 0;
+  std::int64_t tick = 0;
+  std::int64_t next_wakeup = 0;
+  std::uint32_t woken = 0;
+  std::uint32_t relayed = 0;
+  std::uint32_t events = 0;
+  std::uint32_t stop_run_chars = 0;
+};
+
+/// An answer: the acknowledgements' heads in one block, then everything they carry, in order.
+template <class Inspector>
+typename Inspector::result_type inspect(Inspector& f, std::vector<tick_ack>& x) {
+  if constexpr (std::is_base_of_v<caf::serializer, Inspector>) {
+    std::vector<ack_head> heads;
+    std::vector<std::uint64_t> woken;
+    std::vector<std::uint64_t> relayed;
+    std::vector<sim_event> events;
+    std::string stops;
+    heads.reserve(x.size());
+    for (const auto& a : x) {
+      heads.push_back({a.participant, a.tick, a.next_wakeup,
+                       static_cast<std::uint32_t>(a.woken.size()),
+                       static_cast<std::uint32_t>(a.relayed.size()),
+                       static_cast<std::uint32_t>(a.events.size()),
+                       static_cast<std::uint32_t>(a.stop_run.size())});
+      woken.insert(woken.end(), a.woken.begin(), a.woken.end());
+      relayed.insert(relayed.end(), a.relayed.begin(), a.relayed.end());
+      events.insert(events.end(), a.events.begin(), a.events.end());
+      stops += a.stop_run;
+    }
+    return f(as_block(heads), as_block(woken), as_block(relayed), events, stops);
+  } else if constexpr (std::is_base_of_v<caf::deserializer, Inspector>) {
+    std::vector<ack_head> heads;
+    std::vector<std::uint64_t> woken;
+    std::vector<std::uint64_t> relayed;
+    std::vector<sim_event> events;
+    std::string stops;
+    if (auto err = f(as_block(heads), as_block(woken), as_block(relayed), events, stops))
+      return err;
+    x.clear();
+    x.reserve(heads.size());
+    std::size_t next_woken = 0, next_relayed = 0, next_event = 0, next_char = 0;
+    for (const auto& h : heads) {
+      if (h.woken > woken.size() - next_woken || h.relayed > relayed.size() - next_relayed ||
+          h.events > events.size() - next_event || h.stop_run_chars > stops.size() - next_char)
+        return caf::make_error(caf::sec::invalid_argument);
+      tick_ack a;
+      a.participant = h.participant;
+      a.tick = h.tick;
+      a.next_wakeup = h.next_wakeup;
+      a.woken.assign(woken.begin() + static_cast<std::ptrdiff_t>(next_woken),
+                     woken.begin() + static_cast<std::ptrdiff_t>(next_woken + h.woken));
+      a.relayed.assign(relayed.begin() + static_cast<std::ptrdiff_t>(next_relayed),
+                       relayed.begin() + static_cast<std::ptrdiff_t>(next_relayed + h.relayed));
+      for (std::uint32_t e = 0; e < h.events; ++e)
+        a.events.push_back(std::move(events[next_event + e]));
+      a.stop_run = stops.substr(next_char, h.stop_run_chars);
+      next_woken += h.woken;
+      next_relayed += h.relayed;
+      next_event += h.events;
+      next_char += h.stop_run_chars;
+      x.push_back(std::move(a));
+    }
+    if (next_woken != woken.size() || next_relayed != relayed.size() ||
+        next_event != events.size() || next_char != stops.size())
+      return caf::make_error(caf::sec::invalid_argument);
+    return caf::error{};
+  } else {
+    auto count = x.size();  // not a wire: printing, say
+    return f(count);
+  }
 }
 
 }  // namespace argus::actors

@@ -7,6 +7,7 @@
 #include <cstdint>
 
 #include "actors/wire_double.hpp"
+#include "actors/wire_frames.hpp"
 #include "eval/observation_log.hpp"
 #include "eval/records.hpp"
 #include "vision/ptz_camera.hpp"
@@ -58,7 +59,8 @@ typename Inspector::result_type inspect(Inspector& f, target_sample& x) {
 /// A worker sends its whole log when the run is over (actors/worker_host.hpp).
 template <class Inspector>
 typename Inspector::result_type inspect(Inspector& f, observation_log::contents& x) {
-  return f(x.frames, x.origins, x.cancels, x.samples, x.sent, x.sent_by_tick, x.sent_after_cancel);
+  return f(actors::as_frames(x.frames), x.origins, x.cancels, x.samples, x.sent, x.sent_by_tick,
+           x.sent_after_cancel);
 }
 
 }  // namespace argus::eval

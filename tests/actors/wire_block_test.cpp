@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "actors/snapshot_delta.hpp"
+#include "actors/tick_ack.hpp"
 #include "caf/binary_deserializer.hpp"
 #include "caf/binary_serializer.hpp"
 #include "caf/stream_deserializer.hpp"
@@ -94,6 +95,79 @@ TEST(wire_block, a_snapshot_delta_keeps_its_moves_through_a_serialisation) {
   EXPECT_EQ(back.tick, 7u);
   EXPECT_EQ(back.changes, delta.changes);
   EXPECT_EQ(back.moved, delta.moved);
+}
+
+// A worker's answer to the clock: 512 acknowledgements, most of them carrying nothing.
+std::vector<tick_ack> an_answer() {
+  std::vector<tick_ack> acks(512);
+  for (std::size_t i = 0; i < acks.size(); ++i) {
+    acks[i].participant = 1000 + i;
+    acks[i].tick = 77;
+    acks[i].next_wakeup = i % 5 == 0 ? 80 : no_wakeup;
+  }
+  acks[3].woken = {4, 9};
+  acks[3].relayed = {9};
+  acks[3].events.push_back({77, 3, 1003, 0, "camera/4", "handoff", "\"to\":9"});
+  acks[3].events.push_back({77, 3, 1003, 1, "camera/4", "joined", ""});
+  acks[300].relayed = {1, 1, 2};
+  acks[511].stop_run = "the strategy raised";
+  acks[511].events.push_back({77, 3, 1511, 0, "camera/512", "crash", ""});
+  return acks;
+}
+
+TEST(wire_block, a_sub_clocks_answer_crosses_whole_and_its_heads_as_one_block) {
+  auto sent = an_answer();
+  std::vector<char> bytes;
+  caf::binary_serializer sink{nullptr, bytes};
+  ASSERT_FALSE(sink(sent));
+  std::vector<tick_ack> back;
+  caf::binary_deserializer source{nullptr, bytes};
+  ASSERT_FALSE(source(back));
+  EXPECT_EQ(source.remaining(), 0u);
+  EXPECT_EQ(back, sent);
+  // Acknowledgements that carry nothing: their heads' block (a two-byte count, then the heads'
+  // own bytes, little-endian, where CAF would write each field big-endian) and four empty tails.
+  std::vector<tick_ack> bare(512);
+  bare[0].participant = 0x0102030405060708ULL;
+  std::vector<char> bare_bytes;
+  caf::binary_serializer bare_sink{nullptr, bare_bytes};
+  ASSERT_FALSE(bare_sink(bare));
+  EXPECT_EQ(bare_bytes.size(), 2 + 512 * sizeof(ack_head) + 4);
+  EXPECT_EQ(std::memcmp(bare_bytes.data() + 2, &bare[0].participant, 8), 0);
+}
+
+TEST(wire_block, an_answer_whose_counts_do_not_add_up_is_refused) {
+  auto sent = an_answer();
+  std::vector<char> bytes;
+  caf::binary_serializer sink{nullptr, bytes};
+  ASSERT_FALSE(sink(sent));
+  // The first head's woken count, one more than its woken follow: the heads are the block
+  // after the count (two bytes for 512), and the count lies 24 bytes into each head.
+  std::uint32_t woken = 0;
+  std::memcpy(&woken, bytes.data() + 2 + 24, sizeof woken);
+  ASSERT_EQ(woken, 0u);
+  woken = 7;
+  std::memcpy(bytes.data() + 2 + 24, &woken, sizeof woken);
+  std::vector<tick_ack> back;
+  caf::binary_deserializer source{nullptr, bytes};
+  EXPECT_TRUE(source(back));
+}
+
+TEST(wire_block, a_batch_of_ticks_crosses_as_its_bytes) {
+  std::vector<batched_tick> due;
+  for (std::uint32_t i = 0; i < 300; ++i) due.push_back({5000 + i, i % 3, 0});
+  std::vector<char> bytes;
+  caf::binary_serializer sink{nullptr, bytes};
+  ASSERT_FALSE(sink(due));
+  EXPECT_EQ(bytes.size(), 2 + 300 * sizeof(batched_tick));
+  std::vector<batched_tick> back;
+  caf::binary_deserializer source{nullptr, bytes};
+  ASSERT_FALSE(source(back));
+  ASSERT_EQ(back.size(), due.size());
+  for (std::size_t i = 0; i < due.size(); ++i) {
+    EXPECT_EQ(back[i].participant, due[i].participant);
+    EXPECT_EQ(back[i].relayed, due[i].relayed);
+  }
 }
 
 }  // namespace
