@@ -96,7 +96,6 @@ struct pending_set_up::requests {
   std::vector<handle> pending;
   std::vector<std::vector<link_placement>> links_of;
   std::vector<std::optional<std::size_t>> host_of_link;
-  worker_loss on_loss = worker_loss::end_run;
 };
 
 pending_set_up::pending_set_up() = default;
@@ -111,7 +110,6 @@ pending_set_up ask_workers_to_set_up(caf::actor_system& system, const config::sc
   pending_set_up out;
   out.asked = std::make_unique<pending_set_up::requests>(system);
   auto& asked = *out.asked;
-  asked.on_loss = on_loss;
   const auto where = place_cameras(scenario, workers.size());
   // Each worker's links, in topology order; the coordinator's (`--on-worker-loss crash-nodes`)
   // are spawned by spawn_remote_network.
