@@ -64,6 +64,24 @@ std::vector<T> ask_all(caf::scoped_actor& self, const std::vector<worker_contact
   return answers;
 }
 
+// Asks every worker in `live` at once, then hands each answer of type T to `use`, in their
+// order; a worker that fails or does not answer is a warning, and the others are still asked.
+template <class T, class Atom, class Use>
+void ask_each(caf::scoped_actor& self, const std::vector<const worker_contact*>& live,
+              std::chrono::milliseconds timeout, const char* what, Atom atom, Use use) {
+  using request = decltype(self->request(caf::actor{}, timeout, atom));
+  std::vector<request> pending;
+  for (const auto* w : live) pending.push_back(self->request(w->host, timeout, atom));
+  for (std::size_t i = 0; i < live.size(); ++i) {
+    try {
+      auto answer = collect<T>(self, *live[i], timeout, what, pending[i]);
+      use(answer);
+    } catch (const std::exception& e) {
+      spdlog::warn("{}", e.what());
+    }
+  }
+}
+
 }  // namespace
 
 void greet_workers(caf::actor_system& system, const std::vector<worker_contact>& workers,
@@ -233,37 +251,15 @@ void finish_workers(caf::actor_system& system, const std::vector<worker_contact>
   }
   // The last tick's turns: no gather follows them.
   if (shown)
-    for (const auto* w : live) {
-      try {
-        shown(ask<live_display>(self, *w, timeout, "showing its cameras' last turns",
-                                take_display_atom_v));
-      } catch (const std::exception& e) {
-        spdlog::warn("{}", e.what());
-      }
-    }
+    ask_each<live_display>(self, live, timeout, "showing its cameras' last turns",
+                           take_display_atom_v,
+                           [&](live_display& last) { shown(std::move(last)); });
   // Every worker is asked at once, so they write their logs side by side; they are added in
   // the workers' order, as one process records them.
-  using log_request = decltype(self->request(caf::actor{}, timeout, take_log_atom_v));
-  std::vector<log_request> logs;
-  for (const auto* w : live) logs.push_back(self->request(w->host, timeout, take_log_atom_v));
-  for (std::size_t i = 0; i < live.size(); ++i) {
-    try {
-      log.add_worker_share(collect<eval::observation_log::contents>(
-          self, *live[i], timeout, "handing over its log", logs[i]));
-    } catch (const std::exception& e) {
-      spdlog::warn("{}", e.what());
-    }
-  }
-  using release_request = decltype(self->request(caf::actor{}, timeout, release_atom_v));
-  std::vector<release_request> releases;
-  for (const auto* w : live) releases.push_back(self->request(w->host, timeout, release_atom_v));
-  for (std::size_t i = 0; i < live.size(); ++i) {
-    try {
-      collect<done_atom>(self, *live[i], timeout, "releasing the run", releases[i]);
-    } catch (const std::exception& e) {
-      spdlog::warn("{}", e.what());
-    }
-  }
+  ask_each<eval::observation_log::contents>(
+      self, live, timeout, "handing over its log", take_log_atom_v,
+      [&](eval::observation_log::contents& share) { log.add_worker_share(std::move(share)); });
+  ask_each<done_atom>(self, live, timeout, "releasing the run", release_atom_v, [](done_atom) {});
 }
 
 }  // namespace argus::actors

@@ -127,7 +127,7 @@ caf::behavior anchor_behavior(caf::event_based_actor*, int) {
 }
 
 // Releases the workers' set-ups and ends the anchor they watch, unless dismissed: a run that
-// fails before its network is spawned must leave nothing hosted on them, and no actor here that
+// fails before its world is spawned must leave nothing hosted on them, and no actor here that
 // the actor system would wait for.
 class set_up_guard {
  public:
@@ -221,7 +221,7 @@ run_outcome run_scenario(const config::scenario& scenario, const run_options& op
                                    setup_for_workers(scenario, options, anchor),
                                    options.on_worker_loss, steps_crowd);
   }
-  // Until the network is spawned: a run that fails leaves nothing hosted on the workers.
+  // Until the world is spawned: a run that fails leaves nothing hosted on the workers.
   set_up_guard release_set_up(system, workers, anchor);
 
   run_outcome outcome;
@@ -370,12 +370,11 @@ run_outcome run_scenario(const config::scenario& scenario, const run_options& op
   // enqueued in program order, they all reach their receivers before the first tick.
   auto board = cameras_world->board;
   network_directory net;
-  // Nothing has started when a worker refuses: end what did spawn, here and on the workers.
+  // Nothing has started when a worker refuses: end what did spawn here (release_set_up ends
+  // what the workers host).
   const auto abandon = [&] {
-    for (const auto& a : {clock, recorder, progress, anchor})
+    for (const auto& a : {clock, recorder, progress})
       if (a) caf::anon_send_exit(a, caf::exit_reason::user_shutdown);
-    caf::scoped_actor self{system};
-    for (const auto& w : workers) self->send(w.host, release_atom_v);
   };
   for (const auto& w : partition_workers)
     world_settings.partition_hosts.push_back(w ? partition_host{workers[*w].host, workers[*w].name}
@@ -390,7 +389,6 @@ run_outcome run_scenario(const config::scenario& scenario, const run_options& op
       throw;
     }
   }
-  release_set_up.dismiss();
   auto script = spawn_scenario_script(system, scenario, clock, log, live, operators);
   caf::anon_send(clock, join_atom_v, script, script_participant(live != nullptr));
   auto faults = spawn_fault_injector(system, scenario, clock, std::move(net), live);
@@ -409,6 +407,7 @@ run_outcome run_scenario(const config::scenario& scenario, const run_options& op
     abandon();
     throw;
   }
+  release_set_up.dismiss();
   for (auto& [handle, info] : crowd.participants) caf::anon_send(clock, join_atom_v, handle, info);
   // What the workers' cameras did comes with their answers in phase world, for the world.
   if (!workers.empty())

@@ -249,10 +249,4 @@ std::vector<std::vector<pedestrian_state>> apply_subsets(const world::snapshot& 
   return out;
 }
 
-std::vector<pedestrian_state> apply_subset(const world::snapshot& before, subset_delta delta) {
-  std::vector<subset_delta> one;
-  one.push_back(std::move(delta));
-  return std::move(apply_subsets(before, std::move(one)).front());
-}
-
 }  // namespace argus::actors

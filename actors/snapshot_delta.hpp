@@ -102,13 +102,8 @@ snapshot_delta delta_between(const world::snapshot* before, const world::snapsho
 /// naming a pedestrian that is not in `before` or out of order.
 subset_delta subset_between(const world::snapshot& before, std::span<const world::pedestrian> now);
 
-/// The states `delta` describes, in id order. Throws std::invalid_argument when it was not made
-/// from `before`.
-std::vector<world::pedestrian_state> apply_subset(const world::snapshot& before,
-                                                  subset_delta delta);
-
-/// The states each of `deltas` describes (apply_subset for each), read in one pass over
-/// `before`. Throws std::invalid_argument when one was not made from `before`.
+/// The states each of `deltas` describes, in id order, read in one pass over `before`. Throws
+/// std::invalid_argument when one was not made from `before`.
 std::vector<std::vector<world::pedestrian_state>> apply_subsets(const world::snapshot& before,
                                                                 std::vector<subset_delta> deltas);
 

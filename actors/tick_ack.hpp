@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "actors/sim_event.hpp"
@@ -123,30 +124,22 @@ typename Inspector::result_type inspect(Inspector& f, std::vector<tick_ack>& x) 
       return err;
     x.clear();
     x.reserve(heads.size());
-    std::size_t next_woken = 0, next_relayed = 0, next_event = 0, next_char = 0;
+    runs_of woken_runs(woken);
+    runs_of relayed_runs(relayed);
+    runs_of event_runs(events);
+    runs_of stop_runs(stops);
     for (const auto& h : heads) {
-      if (h.woken > woken.size() - next_woken || h.relayed > relayed.size() - next_relayed ||
-          h.events > events.size() - next_event || h.stop_run_chars > stops.size() - next_char)
-        return caf::make_error(caf::sec::invalid_argument);
       tick_ack a;
       a.participant = h.participant;
       a.tick = h.tick;
       a.next_wakeup = h.next_wakeup;
-      a.woken.assign(woken.begin() + static_cast<std::ptrdiff_t>(next_woken),
-                     woken.begin() + static_cast<std::ptrdiff_t>(next_woken + h.woken));
-      a.relayed.assign(relayed.begin() + static_cast<std::ptrdiff_t>(next_relayed),
-                       relayed.begin() + static_cast<std::ptrdiff_t>(next_relayed + h.relayed));
-      for (std::uint32_t e = 0; e < h.events; ++e)
-        a.events.push_back(std::move(events[next_event + e]));
-      a.stop_run = stops.substr(next_char, h.stop_run_chars);
-      next_woken += h.woken;
-      next_relayed += h.relayed;
-      next_event += h.events;
-      next_char += h.stop_run_chars;
+      if (!woken_runs.take(h.woken, a.woken) || !relayed_runs.take(h.relayed, a.relayed) ||
+          !event_runs.take(h.events, a.events) || !stop_runs.take(h.stop_run_chars, a.stop_run))
+        return caf::make_error(caf::sec::invalid_argument);
       x.push_back(std::move(a));
     }
-    if (next_woken != woken.size() || next_relayed != relayed.size() ||
-        next_event != events.size() || next_char != stops.size())
+    if (!woken_runs.all_taken() || !relayed_runs.all_taken() || !event_runs.all_taken() ||
+        !stop_runs.all_taken())
       return caf::make_error(caf::sec::invalid_argument);
     return caf::error{};
   } else {

@@ -11,6 +11,7 @@
 #include <bit>
 #include <cstddef>
 #include <cstring>
+#include <iterator>
 #include <type_traits>
 #include <vector>
 
@@ -59,6 +60,30 @@ caf::error read_block(caf::deserializer& source, std::size_t count, std::vector<
 }
 
 }  // namespace detail
+
+/// The records that follow a block of heads, handed out in runs, in order: each head says how
+/// many are its. A run longer than what is left is refused, and `all_taken` says whether any
+/// was left over: counts that do not add up are a message that was not made by Argus.
+template <class Items>
+class runs_of {
+ public:
+  explicit runs_of(Items& items) : items_(items) {}
+  /// Moves the next `count` items into `out`; false (and nothing moved) when fewer are left.
+  template <class Out>
+  bool take(std::size_t count, Out& out) {
+    if (count > items_.size() - next_) return false;
+    const auto from = items_.begin() + static_cast<std::ptrdiff_t>(next_);
+    out.assign(std::make_move_iterator(from),
+               std::make_move_iterator(from + static_cast<std::ptrdiff_t>(count)));
+    next_ += count;
+    return true;
+  }
+  bool all_taken() const { return next_ == items_.size(); }
+
+ private:
+  Items& items_;
+  std::size_t next_ = 0;
+};
 
 template <class Inspector, class T>
 typename Inspector::result_type inspect(Inspector& f, block_of<T>& x) {

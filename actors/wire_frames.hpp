@@ -9,7 +9,6 @@
 #include <bit>
 #include <cstddef>
 #include <cstdint>
-#include <iterator>
 #include <map>
 #include <type_traits>
 #include <vector>
@@ -70,11 +69,10 @@ inline caf::error frames_of(const std::vector<frame_head>& heads,
                             std::vector<eval::visible_box>& visible,
                             std::map<int, std::vector<eval::camera_frame>>& out) {
   out.clear();
-  std::size_t next_look = 0;
-  std::size_t next_box = 0;
+  runs_of look_runs(looks);
+  runs_of box_runs(visible);
   for (const auto& h : heads) {
-    if (h.state > static_cast<std::uint32_t>(eval::frame_state::performing_task) ||
-        h.looks > looks.size() - next_look || h.visible > visible.size() - next_box)
+    if (h.state > static_cast<std::uint32_t>(eval::frame_state::performing_task))
       return caf::make_error(caf::sec::invalid_argument);
     eval::camera_frame f;
     f.tick = h.tick;
@@ -82,17 +80,11 @@ inline caf::error frames_of(const std::vector<frame_head>& heads,
     f.pose = {std::bit_cast<double>(h.pan_bits), std::bit_cast<double>(h.tilt_bits),
               std::bit_cast<double>(h.field_of_view_bits)};
     f.state = static_cast<eval::frame_state>(h.state);
-    const auto look_at = looks.begin() + static_cast<std::ptrdiff_t>(next_look);
-    f.looks.assign(std::make_move_iterator(look_at),
-                   std::make_move_iterator(look_at + static_cast<std::ptrdiff_t>(h.looks)));
-    const auto box_at = visible.begin() + static_cast<std::ptrdiff_t>(next_box);
-    f.visible.assign(std::make_move_iterator(box_at),
-                     std::make_move_iterator(box_at + static_cast<std::ptrdiff_t>(h.visible)));
-    next_look += h.looks;
-    next_box += h.visible;
+    if (!look_runs.take(h.looks, f.looks) || !box_runs.take(h.visible, f.visible))
+      return caf::make_error(caf::sec::invalid_argument);
     out[h.key].push_back(std::move(f));
   }
-  if (next_look != looks.size() || next_box != visible.size())
+  if (!look_runs.all_taken() || !box_runs.all_taken())
     return caf::make_error(caf::sec::invalid_argument);
   return caf::error{};
 }

@@ -271,17 +271,16 @@ std::vector<std::vector<float>> station::cached_or_computed_fields(
   }
   const auto hex = key.hex();
   const field_cache cache(settings_.field_cache);
-  if (auto kept = cache.load(hex, sources.size(), blocked_.size())) {
-    fields_from_cache_ = true;
-    return std::move(*kept);
-  }
+  const auto kept = [&] {
+    auto fields = cache.load(hex, sources.size(), blocked_.size());
+    fields_from_cache_ = fields.has_value();
+    return fields;
+  };
+  if (auto fields = kept()) return std::move(*fields);
   // One process computes, the others wait and read what it stored (a distributed run's
   // processes load the station side by side).
   const auto computing = cache.lock_to_compute();
-  if (auto kept = cache.load(hex, sources.size(), blocked_.size())) {
-    fields_from_cache_ = true;
-    return std::move(*kept);
-  }
+  if (auto fields = kept()) return std::move(*fields);
   auto fields = distance_fields(sources);
   field_cache_problem_ = cache.store(hex, fields);
   return fields;

@@ -24,6 +24,13 @@
 namespace argus::actors::testing {
 namespace {
 
+// The states one partition's subset describes.
+std::vector<world::pedestrian_state> apply_one(const world::snapshot& before, subset_delta delta) {
+  std::vector<subset_delta> one;
+  one.push_back(std::move(delta));
+  return std::move(apply_subsets(before, std::move(one)).front());
+}
+
 std::uint64_t bits_of(double x) {
   return std::bit_cast<std::uint64_t>(x);
 }
@@ -198,13 +205,13 @@ TEST(snapshot_delta, a_partitions_kept_pedestrians_cross_as_changes) {
   subset_delta crossed;
   caf::binary_deserializer source{nullptr, bytes};
   ASSERT_FALSE(source(crossed));
-  const auto states = apply_subset(before, crossed);
+  const auto states = apply_one(before, crossed);
   ASSERT_EQ(states.size(), 3u);
   for (std::size_t k = 0; k < 3; ++k) EXPECT_TRUE(states[k] == kept[k].state) << k;
   EXPECT_TRUE(std::signbit(states[1].velocity.x()));
   // Applied to another snapshot, or made from one that lacks a pedestrian: refused.
   world::snapshot fewer(*station, 1, std::chrono::duration<double>{0.1}, {walker_at(1, 1.0)});
-  EXPECT_THROW(apply_subset(fewer, crossed), std::invalid_argument);
+  EXPECT_THROW(apply_one(fewer, crossed), std::invalid_argument);
   EXPECT_THROW(subset_between(fewer, kept), std::invalid_argument);
 }
 
@@ -232,7 +239,7 @@ TEST(snapshot_delta, several_partitions_subsets_are_read_together_as_each_alone)
   const auto together = apply_subsets(before, deltas);
   ASSERT_EQ(together.size(), 3u);
   for (std::size_t part = 0; part < 3; ++part) {
-    const auto alone = apply_subset(before, deltas[part]);
+    const auto alone = apply_one(before, deltas[part]);
     ASSERT_EQ(together[part].size(), held[part].size()) << part;
     ASSERT_EQ(alone.size(), held[part].size()) << part;
     for (std::size_t k = 0; k < held[part].size(); ++k) {
