@@ -157,7 +157,8 @@ caf::result<std::vector<caf::actor>> set_up(host_actor* self, worker_setup& setu
   try {
     hosted_run run;
     run.files = std::make_unique<setup_files>();
-    run.scenario = config::parse_scenario(setup.scenario_yaml, "the coordinator's scenario");
+    run.scenario =
+        config::parse_written_scenario(setup.scenario_yaml, "the coordinator's scenario");
     controller::resolve_strategy(run.scenario);
     // Cameras only look at the station: unless crowd partitions step here, no walker needs its
     // distance fields, which are most of a large station's loading time (the coordinator has

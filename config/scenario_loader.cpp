@@ -695,36 +695,20 @@ problem whole_file_problem(const std::string& file, std::string message) {
   return problem{file, 0, 0, {}, std::move(message)};
 }
 
-}  // namespace
-
-scenario parse_scenario(std::string_view yaml_text, const std::string& source_name) {
-  return parse_scenario(yaml_text, source_name, {});
-}
-
-scenario parse_scenario(std::string_view yaml_text, const std::string& source_name,
-                        std::span<const field_override> overrides) {
+void refuse_bytes_yaml_misreads(std::string_view yaml_text, const std::string& source_name) {
   if (const auto bad = first_non_utf8(yaml_text))
     throw scenario_error({not_utf8(source_name, *bad)});
   if (auto nul = nul_byte(source_name, yaml_text)) throw scenario_error({std::move(*nul)});
-  std::vector<YAML::Node> documents;
-  try {
-    const std::string text{yaml_text};
-    refuse_stuck_documents(text);
-    documents = YAML::LoadAll(text);
-  } catch (const YAML::Exception& error) {
-    // yaml-cpp marks are 0-based; -1 (unknown) becomes 0.
-    throw scenario_error(
-        {problem{source_name, error.mark.line + 1, error.mark.column + 1, {}, error.msg}});
-  }
-  if (documents.size() > 1) {
-    throw scenario_error(
-        {problem{source_name,
-                 documents[1].Mark().line + 1,
-                 1,
-                 {},
-                 fmt::format("expected one YAML document, got {}", documents.size())}});
-  }
-  YAML::Node document = documents.empty() ? YAML::Node{} : documents.front();
+}
+
+[[noreturn]] void throw_syntax_error(const YAML::Exception& error, const std::string& source_name) {
+  // yaml-cpp marks are 0-based; -1 (unknown) becomes 0.
+  throw scenario_error(
+      {problem{source_name, error.mark.line + 1, error.mark.column + 1, {}, error.msg}});
+}
+
+scenario scenario_of(YAML::Node document, const std::string& source_name,
+                     std::span<const field_override> overrides) {
   apply_overrides(document, overrides, source_name);
   scenario out;
   out.name = std::filesystem::path{source_name}.stem().string();
@@ -741,6 +725,46 @@ scenario parse_scenario(std::string_view yaml_text, const std::string& source_na
   }
   if (!reader.problems().empty()) throw scenario_error(reader.take_problems());
   return out;
+}
+
+}  // namespace
+
+scenario parse_scenario(std::string_view yaml_text, const std::string& source_name) {
+  return parse_scenario(yaml_text, source_name, {});
+}
+
+scenario parse_scenario(std::string_view yaml_text, const std::string& source_name,
+                        std::span<const field_override> overrides) {
+  refuse_bytes_yaml_misreads(yaml_text, source_name);
+  std::vector<YAML::Node> documents;
+  try {
+    const std::string text{yaml_text};
+    refuse_stuck_documents(text);
+    documents = YAML::LoadAll(text);
+  } catch (const YAML::Exception& error) {
+    throw_syntax_error(error, source_name);
+  }
+  if (documents.size() > 1) {
+    throw scenario_error(
+        {problem{source_name,
+                 documents[1].Mark().line + 1,
+                 1,
+                 {},
+                 fmt::format("expected one YAML document, got {}", documents.size())}});
+  }
+  return scenario_of(documents.empty() ? YAML::Node{} : documents.front(), source_name, overrides);
+}
+
+scenario parse_written_scenario(std::string_view yaml_text, const std::string& source_name) {
+  refuse_bytes_yaml_misreads(yaml_text, source_name);
+  YAML::Node document;
+  try {
+    // Load reads one document only, so the guard's endless case cannot arise.
+    document = YAML::Load(std::string{yaml_text});
+  } catch (const YAML::Exception& error) {
+    throw_syntax_error(error, source_name);
+  }
+  return scenario_of(std::move(document), source_name, {});
 }
 
 scenario load_scenario(const std::filesystem::path& file) {

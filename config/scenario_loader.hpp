@@ -93,4 +93,11 @@ scenario parse_scenario(std::string_view yaml_text, const std::string& source_na
 scenario parse_scenario(std::string_view yaml_text, const std::string& source_name,
                         std::span<const field_override> overrides);
 
+/// parse_scenario for a scenario as `to_yaml` wrote it (a worker's copy of its coordinator's):
+/// one YAML document, read in one pass. A file is read twice, because only a pass of its own
+/// finds a second document without yaml-cpp's endless one (yaml_guards.hpp); for the large
+/// station's 1,024 cameras each pass is 0.15 s of every worker's set-up. Whatever follows the
+/// first document is not read, so text from anywhere else goes to parse_scenario.
+scenario parse_written_scenario(std::string_view yaml_text, const std::string& source_name);
+
 }  // namespace argus::config

@@ -3,6 +3,8 @@
 #include <fcntl.h>
 #include <openssl/evp.h>
 #include <sys/file.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
 #include <unistd.h>
 // Debian's libxxhash-dev, inlined: the checksum of the fields' bytes, not of the key.
 #define XXH_INLINE_ALL
@@ -115,34 +117,46 @@ std::filesystem::path field_cache::file_of(const std::string& key) const {
   return dir_ / (key + extension);
 }
 
-std::optional<std::vector<std::vector<float>>> field_cache::load(const std::string& key,
-                                                                 std::size_t fields,
-                                                                 std::size_t cells) const {
+std::optional<field_set> field_cache::load(const std::string& key, std::size_t fields,
+                                           std::size_t cells) const {
   if (!key_fits(key)) return std::nullopt;
   const auto file = file_of(key);
-  std::ifstream in(file, std::ios::binary);
-  if (!in) return std::nullopt;
-  file_header header;
-  in.read(reinterpret_cast<char*>(&header), sizeof header);
-  if (in.gcount() != sizeof header || header.magic != magic || header.version != version ||
-      header.fields != fields || header.cells != cells ||
-      std::memcmp(header.key.data(), key.data(), key_chars) != 0)
+  const int fd = ::open(file.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return std::nullopt;
+  const std::size_t value_bytes = cells * sizeof(float);
+  const std::size_t size = sizeof(file_header) + fields * value_bytes;
+  struct stat status {};
+  // A file of another size is not whole (or holds another shape): it is not mapped, so no read
+  // runs past its end.
+  if (::fstat(fd, &status) != 0 || static_cast<std::uint64_t>(status.st_size) != size) {
+    ::close(fd);
     return std::nullopt;
-  std::vector<std::vector<float>> out(fields);
-  fields_checksum checksum;
-  const auto bytes = static_cast<std::streamsize>(cells * sizeof(float));
-  for (auto& f : out) {
-    f.resize(cells);
-    in.read(reinterpret_cast<char*>(f.data()), bytes);
-    if (in.gcount() != bytes) return std::nullopt;
-    checksum.add(f.data(), static_cast<std::size_t>(bytes));
   }
-  const bool whole = in.peek() == std::ifstream::traits_type::eof();
-  if (checksum.digest() != header.checksum || !whole) return std::nullopt;
+  // Populated at once: one call maps the pages the page cache holds, instead of a fault each.
+  void* at = ::mmap(nullptr, size, PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd, 0);
+  ::close(fd);
+  if (at == MAP_FAILED) return std::nullopt;
+  const std::shared_ptr<const void> mapping(
+      at, [size](const void* p) { ::munmap(const_cast<void*>(p), size); });
+  const auto* bytes = static_cast<const unsigned char*>(at);
+  file_header header;
+  std::memcpy(&header, bytes, sizeof header);
+  if (header.magic != magic || header.version != version || header.fields != fields ||
+      header.cells != cells || std::memcmp(header.key.data(), key.data(), key_chars) != 0)
+    return std::nullopt;
+  fields_checksum checksum;
+  checksum.add(bytes + sizeof header, fields * value_bytes);
+  if (checksum.digest() != header.checksum) return std::nullopt;
+  // The header is 128 bytes into a page-aligned mapping: the floats are aligned.
+  std::vector<std::span<const float>> views;
+  views.reserve(fields);
+  for (std::size_t f = 0; f < fields; ++f)
+    views.emplace_back(reinterpret_cast<const float*>(bytes + sizeof header + f * value_bytes),
+                       cells);
   // Marked as used, for trim(); a cache on a read-only disk still serves.
   std::error_code ignored;
   fs::last_write_time(file, fs::file_time_type::clock::now(), ignored);
-  return out;
+  return field_set(mapping, std::move(views));
 }
 
 std::string field_cache::store(const std::string& key,

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "world/field_set.hpp"
+
 namespace argus::world {
 
 /// A station's distance fields kept on disk, so that a machine computes them once for every
@@ -41,9 +43,12 @@ class field_cache {
   }
 
   /// The `fields` fields of `cells` values each stored under `key`, if a whole file of this
-  /// version with a matching checksum is there (and it is marked as just used).
-  std::optional<std::vector<std::vector<float>>> load(const std::string& key, std::size_t fields,
-                                                      std::size_t cells) const;
+  /// version with a matching checksum is there (and it is marked as just used). The file is
+  /// mapped, not copied: the set reads the page cache's copy, shared with every other process
+  /// that loaded it. A file is never changed in place (store writes aside, then renames, and
+  /// trim unlinks), so a mapped one stays whole while it is read.
+  std::optional<field_set> load(const std::string& key, std::size_t fields,
+                                std::size_t cells) const;
 
   /// Stores `fields` under `key` and trims the cache to its size. Returns what went wrong
   /// (the folder cannot be made, the disk is full), empty when it was stored: a cache that

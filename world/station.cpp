@@ -10,6 +10,7 @@
 #include <limits>
 #include <stdexcept>
 #include <thread>
+#include <utility>
 
 #include "world/field_cache.hpp"
 #include "world/layout_loader.hpp"
@@ -252,9 +253,8 @@ std::vector<std::vector<float>> station::distance_fields(
   return fields;
 }
 
-std::vector<std::vector<float>> station::cached_or_computed_fields(
-    const std::vector<std::vector<int>>& sources) {
-  if (settings_.field_cache.empty()) return distance_fields(sources);
+field_set station::cached_or_computed_fields(const std::vector<std::vector<int>>& sources) {
+  if (settings_.field_cache.empty()) return field_set(distance_fields(sources));
   // Everything the fields are computed from; the cell size gives the step costs.
   field_key key;
   key.add_value(field_cache::version);
@@ -283,7 +283,7 @@ std::vector<std::vector<float>> station::cached_or_computed_fields(
   if (auto fields = kept()) return std::move(*fields);
   auto fields = distance_fields(sources);
   field_cache_problem_ = cache.store(hex, fields);
-  return fields;
+  return field_set(std::move(fields));
 }
 
 std::vector<float> station::dijkstra(const std::vector<int>& sources) const {
@@ -347,10 +347,22 @@ void station::build_fields() {
     }
     return best;
   };
+  // The columns (or rows) whose centres may lie in [lo, hi], a cell wider on each side so that
+  // the rounding of the division cannot leave one out; the centre test below decides. Scanning
+  // the whole grid for each of the large station's 160 targets was 0.1 s of every load.
+  auto centres_within = [&](double lo, double hi, int count) {
+    const auto index = [&](double at) {
+      return static_cast<int>(std::clamp(std::floor(at / settings_.cell_m - 0.5), -2.0,
+                                         static_cast<double>(count) + 1.0));
+    };
+    return std::pair{std::max(0, index(lo) - 1), std::min(count - 1, index(hi) + 2)};
+  };
   auto box_cells = [&](const box& b) {
     std::vector<int> cells;
-    for (int y = 0; y < grid_h_; ++y) {
-      for (int x = 0; x < grid_w_; ++x) {
+    const auto [x0, x1] = centres_within(b.min.x(), b.max.x(), grid_w_);
+    const auto [y0, y1] = centres_within(b.min.y(), b.max.y(), grid_h_);
+    for (int y = y0; y <= y1; ++y) {
+      for (int x = x0; x <= x1; ++x) {
         const vec2 centre{(x + 0.5) * settings_.cell_m, (y + 0.5) * settings_.cell_m};
         if (b.contains(centre) && !blocked_[y * grid_w_ + x]) cells.push_back(y * grid_w_ + x);
       }
@@ -438,7 +450,7 @@ void station::build_fields() {
   fields_ = cached_or_computed_fields(sources);
   for (std::size_t t = 0; t < targets.size(); ++t) {
     const auto& target = targets[t];
-    const auto& field = fields_[t];
+    const auto field = fields_[t];
     if (target.cells.empty()) {
       report(target.element,
              fmt::format("'{}' lies on no walkable floor (navigation grid)", target.name));

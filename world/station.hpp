@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "config/scenario_error.hpp"
+#include "world/field_set.hpp"
 #include "world/layout.hpp"
 #include "world/solid_index.hpp"
 
@@ -175,8 +176,7 @@ class station {
   std::vector<std::vector<float>> distance_fields(
       const std::vector<std::vector<int>>& sources) const;
   /// distance_fields, read from the field cache when it holds them, and stored there when not.
-  std::vector<std::vector<float>> cached_or_computed_fields(
-      const std::vector<std::vector<int>>& sources);
+  field_set cached_or_computed_fields(const std::vector<std::vector<int>>& sources);
   std::vector<float> dijkstra(const std::vector<int>& sources) const;
   // The lower-left of the four cells whose centres surround `p`: where direction_to's
   // bilinear stencil starts (and what prefetch_route fetches around).
@@ -203,7 +203,7 @@ class station {
   std::vector<float> wall_cost_;
   // Bit d set: the grid edge from this cell in direction d (of the 8) crosses a wall.
   std::vector<std::uint8_t> edge_blocked_;
-  std::vector<std::vector<float>> fields_;
+  field_set fields_;
   std::vector<int> field_base_;  // first field of each target_kind
   bool fields_from_cache_ = false;
   std::string field_cache_problem_;

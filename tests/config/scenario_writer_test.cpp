@@ -1,6 +1,7 @@
 #include "config/scenario_writer.hpp"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 
@@ -132,6 +133,47 @@ TEST(scenario_writer, writes_a_camera_with_every_field) {
       << text;
   EXPECT_NE(text.find("\n      color_response: off\n"), std::string::npos) << text;
   EXPECT_NE(text.find("\n      dropout: {fraction: 0, kind: snow}\n"), std::string::npos) << text;
+}
+
+// A worker reads its coordinator's to_yaml in one pass (parse_written_scenario): it must come
+// back as the file's own reader gives it, every field.
+TEST(scenario_writer, the_one_pass_reader_reads_what_the_writer_wrote) {
+  const auto original = load_scenario(data_dir / "full.yaml");
+  auto back = parse_written_scenario(to_yaml(original), "written.yaml");
+  back.source_path = original.source_path;
+  expect_same(back, original);
+}
+
+TEST(scenario_writer, the_one_pass_reader_names_a_syntax_error_as_the_file_reader_does) {
+  const auto problems_of = [](auto read) -> std::vector<problem> {
+    try {
+      read("name: a\nrun: {seed: 1\n", "the coordinator's scenario");
+    } catch (const scenario_error& e) {
+      return e.problems();
+    }
+    return {};
+  };
+  const auto one_pass =
+      problems_of([](auto text, auto name) { return parse_written_scenario(text, name); });
+  ASSERT_EQ(one_pass.size(), 1u);
+  EXPECT_EQ(one_pass[0].file, "the coordinator's scenario");
+  EXPECT_GT(one_pass[0].line, 0);
+  EXPECT_EQ(one_pass, problems_of([](auto text, auto name) { return parse_scenario(text, name); }));
+}
+
+// parse_scenario's guard against yaml-cpp's endless documents (a stray ',') costs a pass of its
+// own; the one-pass reader reads one document, so the same text ends at once.
+TEST(scenario_writer, the_one_pass_reader_ends_on_a_stray_comma) {
+  EXPECT_EXIT(
+      {
+        alarm(20);
+        try {
+          parse_written_scenario("- 1\n,\n", "comma.yaml");
+        } catch (const scenario_error&) {
+        }
+        std::exit(0);
+      },
+      ::testing::ExitedWithCode(0), "");
 }
 
 }  // namespace

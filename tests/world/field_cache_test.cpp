@@ -125,6 +125,30 @@ TEST(field_cache, a_damaged_short_or_other_version_file_is_not_read_and_is_repla
   }
 }
 
+// A station reads its kept fields where the file is mapped. The cache never changes a file in
+// place: it writes a new one aside and renames it over the old, and trim() unlinks. Either
+// leaves a station that mapped the old file with the fields it read.
+TEST(field_cache, a_station_keeps_the_fields_it_read_when_the_file_is_replaced_or_removed) {
+  scratch dir("replaced");
+  const station computed{hall()};
+  { const station first{hall(), cached_in(dir.path())}; }
+  const station reading{hall(), cached_in(dir.path())};
+  ASSERT_TRUE(reading.fields_from_cache());
+  const auto file = files_in(dir.path()).at(0);
+  const auto size = fs::file_size(file);
+  // Another file of the same size, written aside and renamed over it, as store() does.
+  const auto aside = dir.path() / "aside";
+  {
+    std::ofstream out(aside, std::ios::binary);
+    const std::string zeros(size, '\0');
+    out.write(zeros.data(), static_cast<std::streamsize>(zeros.size()));
+  }
+  fs::rename(aside, file);
+  EXPECT_EQ(digest_of(reading), digest_of(computed));
+  fs::remove(file);
+  EXPECT_EQ(digest_of(reading), digest_of(computed));
+}
+
 TEST(field_cache, the_cache_keeps_to_its_size_and_drops_the_least_recently_used_first) {
   scratch dir("trim");
   const std::vector<std::vector<float>> fields(2, std::vector<float>(1000, 1.5f));
