@@ -7,7 +7,7 @@
 #include <string>
 
 #include "report/drawing.hpp"
-#include "world/plan_view.hpp"
+#include "world/plan_view_image.hpp"
 #include "world/station.hpp"
 
 namespace argus::report {
@@ -85,8 +85,7 @@ class path_painter {
 std::vector<unsigned char> render_plan_report(const world::station& where,
                                               std::span<const config::camera_settings> cameras,
                                               const target_paths& paths) {
-  const auto plan = world::render_plan_view(where, cameras, nullptr, nullptr, {});
-  cv::Mat image = cv::imdecode(plan, cv::IMREAD_COLOR);
+  cv::Mat image = world::paint_plan_view(where, cameras, nullptr, nullptr);
   path_painter paint(where, image);
   paint.camera_rings(cameras);
   for (const auto& [task, samples] : paths) paint.path(task, samples);

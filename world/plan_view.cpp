@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "world/plan_view_image.hpp"
 #include "world/snapshot.hpp"
 #include "world/station.hpp"
 
@@ -200,18 +201,24 @@ std::array<int, 2> plan_pixel(const station& where, const plan_view_options& opt
           static_cast<int>(std::lround(margin_px + (height - at.y()) * options.pixels_per_m))};
 }
 
-std::vector<unsigned char> render_plan_view(const station& where,
-                                            std::span<const config::camera_settings> cameras,
-                                            const snapshot* frame,
-                                            const std::map<int, std::vector<vec2>>* trails,
-                                            const plan_view_options& options) {
+cv::Mat paint_plan_view(const station& where, std::span<const config::camera_settings> cameras,
+                        const snapshot* frame, const std::map<int, std::vector<vec2>>* trails,
+                        const plan_view_options& options) {
   painter paint(where, options);
   paint.floor();
   paint.furniture();
   paint.cameras(cameras);
   paint.pedestrians(frame, trails);
+  return paint.image();
+}
+
+std::vector<unsigned char> render_plan_view(const station& where,
+                                            std::span<const config::camera_settings> cameras,
+                                            const snapshot* frame,
+                                            const std::map<int, std::vector<vec2>>* trails,
+                                            const plan_view_options& options) {
   std::vector<unsigned char> png;
-  cv::imencode(".png", paint.image(), png);
+  cv::imencode(".png", paint_plan_view(where, cameras, frame, trails, options), png);
   return png;
 }
 

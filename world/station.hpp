@@ -75,6 +75,12 @@ class station {
   /// - street portals touch the edge of the walkable floor, internal portals join two
   ///   regions.
   explicit station(layout plan, navigation_settings settings = {});
+  /// Not copied: its counters point into its own layout, so a copy's would point into the
+  /// original's. A move keeps the layout's storage, and with it those pointers.
+  station(const station&) = delete;
+  station& operator=(const station&) = delete;
+  station(station&&) = default;
+  station& operator=(station&&) = default;
 
   /// load_layout + construct, shared for the partitions.
   static std::shared_ptr<const station> load(const std::filesystem::path& file,
