@@ -8,6 +8,10 @@
 # RUN OPTIONS go to the distributed runs, e.g. `--set placement.crowd=coordinator`.
 # Then the per-tick cost of the cross-process barrier: minimal.yaml (emulated, three cameras,
 # nearly nothing to compute) in one process and with one worker, 1,800 ticks.
+# Each scenario runs for its own duration (the large station 2 min, Penn Station 15 min), as a
+# user's run does: a short run is mostly the fixed set-up of three processes on two cores.
+# LARGE_DURATION and PENN_DURATION set another, e.g. LARGE_DURATION="20 s" PENN_DURATION="60 s"
+# for a quicker look (about 3 min a round instead of about 10).
 # Every process shares one field cache (docs/world.md, "The field cache"). FIELD_CACHE=cold (the
 # default) empties it before each run, so each run computes its station's fields once (in its
 # coordinator; its workers read them); FIELD_CACHE=warm keeps it, as on a machine that has run
@@ -42,11 +46,15 @@ timed() {  # timed FILE COMMAND...: appends the wall seconds of COMMAND to FILE
   python3 -c "print($end - $start)" >>"$file"
 }
 
-compare() {  # compare NAME LABEL SCENARIO DURATION [run options]
+compare() {  # compare NAME LABEL SCENARIO DURATION [run options]; DURATION "" is the scenario's
   local name=$1 label=$2 scenario=$3 duration=$4
   shift 4
-  local run=("$argus" run "$root/scenarios/$scenario" --seed 1 --duration "$duration" --no-feeds
-             --no-progress "$@")
+  local run=("$argus" run "$root/scenarios/$scenario" --seed 1 --no-feeds --no-progress "$@")
+  if [ -n "$duration" ]; then
+    run+=(--duration "$duration")
+  else
+    duration="its own duration"
+  fi
   for r in $(seq "$rounds"); do
     timed "$out/$name-1" "${run[@]}" --set run.output_dir="$out/$name-run-1"
     timed "$out/$name-2" "${run[@]}" --set run.output_dir="$out/$name-run-2" --workers "$two" \
@@ -70,8 +78,8 @@ print(f"{name} ({duration}, field cache {sys.argv[6]}): one process {med(one):.2
 PY
 }
 
-compare large "large station, emulated" large_station.yaml "20 s"
-compare penn "Penn Station, pixels" penn_station.yaml "60 s"
+compare large "large station, emulated" large_station.yaml "${LARGE_DURATION:-}"
+compare penn "Penn Station, pixels" penn_station.yaml "${PENN_DURATION:-}"
 
 # The barrier: the same near-empty run in one process and with one worker.
 for r in $(seq "$rounds"); do
