@@ -274,6 +274,7 @@ run_outcome run_scenario(const config::scenario& scenario, const run_options& op
       for (const auto& p : picks) log->add_origin_if_new(p);
     };
     world_settings.on_worker_loss = options.on_worker_loss;
+    world_settings.adopted_threads = threads;
     if (options.on_worker_loss == worker_loss::crash_nodes)
       world_settings.log_gathered = [log](eval::observation_log::contents share) {
         log->add_worker_share(std::move(share));

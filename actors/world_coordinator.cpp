@@ -1,10 +1,12 @@
 #include "actors/world_coordinator.hpp"
 
 #include <algorithm>
+#include <future>
 #include <map>
 #include <optional>
 #include <set>
 #include <stdexcept>
+#include <thread>
 #include <utility>
 
 #include "actors/crowd_partition.hpp"
@@ -50,6 +52,7 @@ struct coordinator_setup {
   /// The shadows of the workers' partitions at the start (crash-nodes), moved into the state.
   std::map<std::size_t, partition_shadow> shadows;
   std::function<std::vector<int>()> watched_cameras;
+  std::size_t adopted_threads = 0;
 };
 
 // A distributed tick in progress: the workers whose gathers are still awaited.
@@ -185,6 +188,32 @@ void adopt_lost_partitions(caf::stateful_actor<world_coordinator_state>* self, t
   st.lost_partitions.clear();
 }
 
+// A lost worker's partitions step side by side, as they did on their worker: one after another
+// in this turn, losing a worker that stepped half of a large crowd made every tick wait for that
+// half on one core. Each step reads only the last snapshot, so the results do not depend on
+// which thread computes them.
+void step_adopted(const std::map<std::size_t, std::vector<world::pedestrian>>& adopted,
+                  const world::station& where, const world::snapshot& previous,
+                  const std::vector<world::partition_bounds>& bounds,
+                  const world::behaviour_settings& behaviour, std::size_t threads_at_most,
+                  std::vector<world::partition_result>& results) {
+  std::vector<std::size_t> order;
+  for (const auto& entry : adopted) order.push_back(entry.first);
+  if (threads_at_most == 0) threads_at_most = std::max(1u, std::thread::hardware_concurrency());
+  const std::size_t threads = std::min(order.size(), threads_at_most);
+  auto step_every = [&](std::size_t first) {
+    for (std::size_t k = first; k < order.size(); k += threads) {
+      const auto i = order[k];
+      results[i] = world::partition_step(where, previous, adopted.at(i), bounds[i], behaviour);
+    }
+  };
+  std::vector<std::future<void>> others;
+  for (std::size_t t = 1; t < threads; ++t)
+    others.push_back(std::async(std::launch::async, step_every, t));
+  step_every(0);
+  for (auto& other : others) other.get();
+}
+
 void step_world(caf::stateful_actor<world_coordinator_state>* self, tick_context& ctx,
                 std::vector<std::pair<mail_stamp, partition_report>> due) {
   auto& st = self->state;
@@ -209,11 +238,9 @@ void step_world(caf::stateful_actor<world_coordinator_state>* self, tick_context
     reported_by[report->index] = true;
     ++reported;
   }
-  for (const auto& [i, pedestrians] : st.adopted) {
-    results[i] = world::partition_step(*setup.station, *st.current, pedestrians, setup.bounds[i],
-                                       setup.behaviour);
-    ++reported;
-  }
+  step_adopted(st.adopted, *setup.station, *st.current, setup.bounds, setup.behaviour,
+               setup.adopted_threads, results);
+  reported += st.adopted.size();
   const auto previous = st.current;
   if (reported != count)
     ctx.emit(events::world_partitions_missing{.reported = reported, .partitions = count});
@@ -597,7 +624,8 @@ world_actors spawn_world(caf::actor_system& system, world_run_settings settings)
                                                         std::move(host_of),
                                                         std::move(host_name_of),
                                                         std::move(shadows),
-                                                        std::move(settings.watched_cameras)});
+                                                        std::move(settings.watched_cameras),
+                                                        settings.adopted_threads});
   for (std::size_t i = 0; i < partitions.size(); ++i) {
     caf::anon_send(partitions[i], world_attach_atom_v, coordinator);
     out.participants.emplace_back(partitions[i], infos[i]);

@@ -84,6 +84,9 @@ struct world_run_settings {
   /// when they change, every worker is told (`display_watch_atom`), and sends only their frames.
   /// Null for none.
   std::function<std::vector<int>()> watched_cameras;
+  /// How many threads step a lost worker's partitions here, side by side (crash-nodes); 0 for
+  /// one per core.
+  std::size_t adopted_threads = 0;
 };
 
 /// The actors of a run's crowd, to join to the clock.
