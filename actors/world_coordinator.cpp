@@ -197,6 +197,7 @@ void step_adopted(const std::map<std::size_t, std::vector<world::pedestrian>>& a
                   const std::vector<world::partition_bounds>& bounds,
                   const world::behaviour_settings& behaviour, std::size_t threads_at_most,
                   std::vector<world::partition_result>& results) {
+  if (adopted.empty()) return;
   std::vector<std::size_t> order;
   for (const auto& entry : adopted) order.push_back(entry.first);
   if (threads_at_most == 0) threads_at_most = std::max(1u, std::thread::hardware_concurrency());
