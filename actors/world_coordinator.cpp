@@ -188,10 +188,10 @@ void adopt_lost_partitions(caf::stateful_actor<world_coordinator_state>* self, t
   st.lost_partitions.clear();
 }
 
-// A lost worker's partitions step side by side, as they did on their worker: one after another
-// in this turn, losing a worker that stepped half of a large crowd made every tick wait for that
-// half on one core. Each step reads only the last snapshot, so the results do not depend on
-// which thread computes them.
+// A lost worker's partitions step side by side, as they did on their worker. Stepped one after
+// another in this turn, they made every later tick wait on one core for the half of a large
+// crowd that the worker had stepped. Each step reads only the last snapshot, so which thread
+// steps which partition changes no result.
 void step_adopted(const std::map<std::size_t, std::vector<world::pedestrian>>& adopted,
                   const world::station& where, const world::snapshot& previous,
                   const std::vector<world::partition_bounds>& bounds,
