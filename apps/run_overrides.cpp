@@ -10,7 +10,9 @@ namespace argus::apps {
 
 void add_run_override_options(CLI::App* cmd, run_overrides& into) {
   cmd->add_option("--seed", into.seed, "Run seed (overrides run.seed)")->check(whole_number());
-  cmd->add_option("--threads", into.threads, "CAF scheduler worker threads (0 = all cores)")
+  cmd->add_option("--threads", into.threads,
+                  "Threads of the run: CAF's scheduler, the distance fields, a lost worker's "
+                  "crowd partitions (0 = all cores)")
       ->check(integer_in(0, 256));
   cmd->add_option("--speed", into.speed,
                   "1 = paced to wall clock, N = N times faster, 0 = free-running")
