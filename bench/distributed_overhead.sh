@@ -11,7 +11,7 @@
 # Each scenario runs for its own duration (the large station 2 min, Penn Station 15 min), as a
 # user's run does: a short run is mostly the fixed set-up of three processes on two cores.
 # LARGE_DURATION and PENN_DURATION set another, e.g. LARGE_DURATION="20 s" PENN_DURATION="60 s"
-# for a quicker look (about 3 min a round instead of about 10).
+# for a quicker look (about 3 min a round instead of about 12).
 # Every process shares one field cache (docs/world.md, "The field cache"). FIELD_CACHE=cold (the
 # default) empties it before each run, so each run computes its station's fields once (in its
 # coordinator; its workers read them); FIELD_CACHE=warm keeps it, as on a machine that has run
