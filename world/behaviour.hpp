@@ -62,9 +62,12 @@ struct behaviour_settings {
   /// bench/steady_flow's seed 1 (bench/RESULTS.md): with 0.6 at every speed a stream's core at
   /// 2.5 /m^2 walked 0.3 m/s over Weidmann's speed and bottlenecks under 1.6 m passed
   /// 1.0-1.1 /(m s), under the published 1.2-1.9; with the whole contact at speed (1.0)
-  /// streams under 1 /m^2 walked 0.18 m/s under it.
+  /// streams under 1 /m^2 walked 0.18 m/s under it. Standing, 0.2 (0.3 until 2026-12-07):
+  /// with 0.3 the 0.8 m exit passed 1.18 /(m s) on average over 40 seeds, under the published
+  /// range, and streams at 0.5-1 /m^2 walked 0.15 m/s under Weidmann (bench/RESULTS.md, "The
+  /// lane standing").
   double headway_lane = 0.9;
-  double headway_lane_slow = 0.3;
+  double headway_lane_slow = 0.2;
   double headway_lane_speed_mps = 1.0;
   /// How far ahead a walker looks, for the headway and for the heading to take (see
   /// step_pedestrian): within the neighbour index's reach (snapshot::neighbour_cell_m), and
