@@ -3,11 +3,12 @@
 // corridor, beside Weidmann's curve) and the specific flow through a bottleneck against its
 // width (beside the range the experiments measured). Prints tables and draws them in a PNG.
 //
-//   fundamental_diagram [OUT.png [FIRST LAST]]
+//   fundamental_diagram [OUT.png [SEED...]]
 //
-// OUT.png defaults to fundamental_diagram.png. The bottleneck runs seeds FIRST to LAST (default
-// 1 to 2; each run takes under half a second) and prints each width's mean, least and greatest:
-// two seeds said little about an exit whose flow lies near the range's edge.
+// OUT.png defaults to fundamental_diagram.png. The bottleneck runs the seeds given (default 1 2;
+// as bench/steady_flow takes them, e.g. $(seq 1 20); each run takes under half a second) and
+// prints each width's mean, least and greatest: two seeds said little about an exit whose flow
+// lies near the range's edge.
 
 #include "tests/world/fundamental_diagram.hpp"
 
@@ -17,6 +18,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <string>
@@ -56,18 +58,19 @@ double bottleneck_specific_flow(double width_m, std::uint64_t seed) {
 
 int main(int argc, char** argv) {
   const std::string out = argc > 1 ? argv[1] : "fundamental_diagram.png";
-  std::uint64_t first_seed = 1;
-  std::uint64_t last_seed = 2;
-  if (argc == 4) {
-    first_seed = std::strtoull(argv[2], nullptr, 10);
-    last_seed = std::strtoull(argv[3], nullptr, 10);
+  std::vector<std::uint64_t> seeds;
+  for (int i = 2; i < argc; ++i) {
+    char* rest = nullptr;
+    seeds.push_back(std::strtoull(argv[i], &rest, 10));
+    if (*rest != 0 || seeds.back() == 0) {
+      std::fprintf(stderr,
+                   "usage: fundamental_diagram [OUT.png [SEED...]]: seeds are whole numbers from "
+                   "1, got %s\n",
+                   argv[i]);
+      return 2;
+    }
   }
-  if (argc == 3 || argc > 4 || first_seed < 1 || last_seed < first_seed) {
-    std::fprintf(stderr,
-                 "usage: fundamental_diagram [OUT.png [FIRST LAST]]: FIRST and LAST are the "
-                 "bottleneck's seeds, 1 <= FIRST <= LAST\n");
-    return 2;
-  }
+  if (seeds.empty()) seeds = {1, 2};
   std::vector<diagram_point> block;
   std::printf(
       "Fundamental diagram, block of people in a corridor 4 m wide (area 4 m x 4 m, "
@@ -130,25 +133,25 @@ int main(int argc, char** argv) {
   std::printf("densest: %.2f /m^2 classic, %.2f /m^2 Voronoi\n", densest, densest_voronoi);
   std::printf(
       "\nBottleneck: 150 people leave a 10 m x 10 m room by an exit 1 m long; specific flow "
-      "(1/(m s)), seeds %llu-%llu\n",
-      static_cast<unsigned long long>(first_seed), static_cast<unsigned long long>(last_seed));
+      "(1/(m s)), %zu seeds\n",
+      seeds.size());
   std::printf("%10s %7s %7s %7s   %s\n", "width (m)", "mean", "least", "most", "by seed");
   std::vector<std::pair<double, double>> bottleneck;
   for (const double width : {0.8, 1.0, 1.2, 1.6, 2.0, 2.4}) {
-    std::vector<double> flows;
-    for (auto seed = first_seed; seed <= last_seed; ++seed) {
-      flows.push_back(bottleneck_specific_flow(width, seed));
-      bottleneck.push_back({width, flows.back()});
-    }
     double sum = 0.0;
+    double least = std::numeric_limits<double>::infinity();
+    double most = 0.0;
     std::string by_seed;
-    for (const double f : flows) {
+    for (const auto seed : seeds) {
+      const double f = bottleneck_specific_flow(width, seed);
+      bottleneck.push_back({width, f});
       sum += f;
+      least = std::min(least, f);
+      most = std::max(most, f);
       by_seed += fmt::format(" {:.2f}", f);
     }
-    std::printf("%10.1f %7.3f %7.2f %7.2f  %s\n", width, sum / static_cast<double>(flows.size()),
-                *std::min_element(flows.begin(), flows.end()),
-                *std::max_element(flows.begin(), flows.end()), by_seed.c_str());
+    std::printf("%10.1f %7.3f %7.2f %7.2f  %s\n", width, sum / static_cast<double>(seeds.size()),
+                least, most, by_seed.c_str());
   }
 
   cv::Mat image(500, 1500, CV_8UC3, cv::Scalar(255, 255, 255));
@@ -191,10 +194,9 @@ int main(int argc, char** argv) {
   for (const auto& [w, j] : bottleneck) cv::circle(image, width.at(w, j), 5, ours, cv::FILLED);
   report::draw_text(image, "red: Weidmann (1993) / published bottleneck range", {70, 460}, 0.45,
                     reference);
-  report::draw_text(image,
-                    fmt::format("blue: Argus, block in a corridor; bottleneck ({} seeds)",
-                                last_seed - first_seed + 1),
-                    {560, 460}, 0.45, ours);
+  report::draw_text(
+      image, fmt::format("blue: Argus, block in a corridor; bottleneck ({} seeds)", seeds.size()),
+      {560, 460}, 0.45, ours);
   report::draw_text(image, "green: Argus, jam before a 1 m exit", {1050, 460}, 0.45, jammed);
   report::draw_text(image,
                     "orange: the block (large) and the jam (small) by the Voronoi method, cut-off "
