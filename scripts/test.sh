@@ -93,11 +93,11 @@ stage_begin "ASan+UBSan build and tests"
 # sanitizer build took half of CI's 90 minutes; a CAF-heavy file now compiles 2.6x faster.
 argus_build build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DARGUS_SANITIZE=address,undefined \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DARGUS_BUILD_BENCH=OFF -DARGUS_UNITY=ON
-# A test that fails is run once more under ASan: LeakSanitizer's exit-time tracer can crash
-# itself ("Tracer caught signal 11 ... LeakSanitizer has encountered a fatal error"); a real
-# failure fails every time; it is given three runs, since the tracer crashed about one run in five
-# of rendered_localization_test here (2026-12-07) and twice in a row once in CI. (Its frequent cause here, a stale entry of the OpenGL driver's dynamic
-# TLS in a main thread that had rendered, is gone: report/feed_frames.cpp.)
+# A test that fails is run again under ASan, up to three runs: LeakSanitizer's exit-time tracer
+# can crash itself ("Tracer caught signal 11 ... LeakSanitizer has encountered a fatal error"),
+# about one run in five of rendered_localization_test here (2026-12-07), twice in a row in one
+# CI run; a real failure fails every time. (Its former frequent cause, a stale entry of the
+# OpenGL driver's dynamic TLS in a main thread that had rendered, is gone: report/feed_frames.cpp.)
 # The "slow" runs ran in the Release tree; the shorter runs cover their paths here.
 ctest --test-dir build-asan --output-on-failure -j "$jobs" --repeat until-pass:3 -LE slow
 stage_end asan
