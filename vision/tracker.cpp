@@ -5,6 +5,7 @@
 
 #include "vision/backprojection.hpp"
 #include "vision/ego_motion.hpp"
+#include "vision/kernel_scales.hpp"
 #include "vision/surround_match.hpp"
 
 namespace argus::vision {
@@ -16,6 +17,20 @@ cv::Rect window_around(const cv::Rect& box, double margin) {
   const int dx = static_cast<int>(std::lround(margin * box.width));
   const int dy = static_cast<int>(std::lround(margin * box.height));
   return {box.x - dx, box.y - dy, box.width + 2 * dx, box.height + 2 * dy};
+}
+
+/// Her box after a find: `found`, unless it is the kernel size `estimate` rounds to, in which
+/// case the estimate's size about `found`'s centre. The localiser's sizes are 6 px apart in
+/// height; a box that snapped to the found size every frame would lose each frame's zoom (a few
+/// per cent) to that rounding, and stay a size too small while the camera zooms in on her.
+cv::Rect2d estimate_after_find(const std::optional<cv::Rect2d>& estimate, const cv::Rect& found) {
+  if (!estimate) return cv::Rect2d(found);
+  const long l = std::lround(kernel_size_for(estimate->size()));
+  if (found.width != 2 * l + 1 || found.height != 6 * l + 1) return cv::Rect2d(found);
+  const double cx = found.x + found.width / 2.0;
+  const double cy = found.y + found.height / 2.0;
+  return {cx - estimate->width / 2.0, cy - estimate->height / 2.0, estimate->width,
+          estimate->height};
 }
 
 }  // namespace
@@ -32,6 +47,7 @@ tracker::tracker(color_histogram target, tracker_settings settings,
 
 void tracker::start(const cv::Rect& box) {
   box_ = box;
+  carried_ = cv::Rect2d(box);
   lost_ = false;
   lost_frames_ = 0;
   // The signature was taken from this box: the model is her at this size already.
@@ -101,8 +117,9 @@ std::optional<track_observation> tracker::find_in_frame(const cv::Mat& bin_indic
 
 void tracker::follow_camera(const ptz_state& from, const ptz_state& to, const frame_size& frame) {
   if (!box_ || from == to) return;
-  const auto moved = reproject_box(cv::Rect2d(*box_), from, to, frame);
+  const auto moved = reproject_box(carried_.value_or(cv::Rect2d(*box_)), from, to, frame);
   if (!moved) return;
+  carried_ = *moved;
   const cv::Rect rounded(static_cast<int>(std::lround(moved->x)),
                          static_cast<int>(std::lround(moved->y)),
                          std::max(1, static_cast<int>(std::lround(moved->width))),
@@ -122,7 +139,7 @@ track_observation tracker::update(const cv::Mat& bgr, const find_check& given_ch
   }
   const cv::Rect frame(0, 0, bgr.cols, bgr.rows);
   std::optional<cv::Size2d> size;
-  if (box_) size = cv::Size2d(box_->size());
+  if (box_) size = carried_ ? carried_->size() : cv::Size2d(box_->size());
   const auto localizing = localizer_settings_for(settings_.scales, size, bgr.rows, settings_.rho,
                                                  check ? checked_candidates : 1);
   std::optional<track_observation> seen;
@@ -131,7 +148,7 @@ track_observation tracker::update(const cv::Mat& bgr, const find_check& given_ch
   const bool searching_locally = box_ && lost_frames_ < settings_.local_search_frames;
   if (box_ && !lost_) {
     auto tracking = localizing;
-    if (settings_.ego_motion) tracking.expected_scale = kernel_size_for(cv::Size2d(box_->size()));
+    if (settings_.ego_motion) tracking.expected_scale = kernel_size_for(*size);
     tracking.rho = settings_.track_rho.value_or(settings_.rho);
     const bool in_grace = on_pick_ && (confirmed_ < settings_.surround_grace_frames ||
                                        box_->height < settings_.surround_grace_height_px);
@@ -157,6 +174,9 @@ track_observation tracker::update(const cv::Mat& bgr, const find_check& given_ch
   lost_ = false;
   lost_frames_ = 0;
   box_ = seen->box;
+  // Without ego motion nothing carries the box between frames: the paper's tracker, as it was.
+  carried_ =
+      settings_.ego_motion ? estimate_after_find(carried_, seen->box) : cv::Rect2d(seen->box);
   confirmed_ = in_window ? confirmed_ + 1 : 0;
   on_pick_ = on_pick_ && in_window;
   update_model(indices, seen->box);
