@@ -23,14 +23,12 @@ cv::Rect window_around(const cv::Rect& box, double margin) {
 /// case the estimate's size about `found`'s centre. The localiser's sizes are 6 px apart in
 /// height; a box that snapped to the found size every frame would lose each frame's zoom (a few
 /// per cent) to that rounding, and stay a size too small while the camera zooms in on her.
-cv::Rect2d estimate_after_find(const std::optional<cv::Rect2d>& estimate, const cv::Rect& found) {
-  if (!estimate) return cv::Rect2d(found);
-  const long l = std::lround(kernel_size_for(estimate->size()));
-  if (found.width != 2 * l + 1 || found.height != 6 * l + 1) return cv::Rect2d(found);
+cv::Rect2d estimate_after_find(const cv::Rect2d& estimate, const cv::Rect& found) {
+  const int l = static_cast<int>(std::lround(kernel_size_for(estimate.size())));
+  if (found.size() != kernel_domain({0, 0}, l).size()) return cv::Rect2d(found);
   const double cx = found.x + found.width / 2.0;
   const double cy = found.y + found.height / 2.0;
-  return {cx - estimate->width / 2.0, cy - estimate->height / 2.0, estimate->width,
-          estimate->height};
+  return {cx - estimate.width / 2.0, cy - estimate.height / 2.0, estimate.width, estimate.height};
 }
 
 }  // namespace
@@ -117,7 +115,7 @@ std::optional<track_observation> tracker::find_in_frame(const cv::Mat& bin_indic
 
 void tracker::follow_camera(const ptz_state& from, const ptz_state& to, const frame_size& frame) {
   if (!box_ || from == to) return;
-  const auto moved = reproject_box(carried_.value_or(cv::Rect2d(*box_)), from, to, frame);
+  const auto moved = reproject_box(*carried_, from, to, frame);
   if (!moved) return;
   carried_ = *moved;
   const cv::Rect rounded(static_cast<int>(std::lround(moved->x)),
@@ -139,7 +137,7 @@ track_observation tracker::update(const cv::Mat& bgr, const find_check& given_ch
   }
   const cv::Rect frame(0, 0, bgr.cols, bgr.rows);
   std::optional<cv::Size2d> size;
-  if (box_) size = carried_ ? carried_->size() : cv::Size2d(box_->size());
+  if (carried_) size = carried_->size();
   const auto localizing = localizer_settings_for(settings_.scales, size, bgr.rows, settings_.rho,
                                                  check ? checked_candidates : 1);
   std::optional<track_observation> seen;
@@ -175,8 +173,9 @@ track_observation tracker::update(const cv::Mat& bgr, const find_check& given_ch
   lost_frames_ = 0;
   box_ = seen->box;
   // Without ego motion nothing carries the box between frames: the paper's tracker, as it was.
-  carried_ =
-      settings_.ego_motion ? estimate_after_find(carried_, seen->box) : cv::Rect2d(seen->box);
+  // A first find (no box before it) has no estimate to keep.
+  carried_ = settings_.ego_motion && carried_ ? estimate_after_find(*carried_, seen->box)
+                                              : cv::Rect2d(seen->box);
   confirmed_ = in_window ? confirmed_ + 1 : 0;
   on_pick_ = on_pick_ && in_window;
   update_model(indices, seen->box);

@@ -148,9 +148,9 @@ class tracker {
   multiscale_localizer localizer_;
   std::optional<cv::Rect> box_;
   // Her box as the camera's motion carried it, unrounded, and kept through finds of the same
-  // kernel size (estimate_after_find): its size is the next search's expected size. A zoom of
-  // a few per cent a frame grows a box a few pixels tall by less than a pixel, which rounding to
-  // box_, or snapping to the size found, would undo every frame.
+  // kernel size (estimate_after_find): its size is the next search's expected size. Set
+  // whenever box_ is. A zoom of a few per cent a frame grows a box a few pixels tall by less
+  // than a pixel, which rounding to box_, or snapping to the size found, would undo every frame.
   std::optional<cv::Rect2d> carried_;
   bool lost_ = true;
   // Frames in a row the track has been lost.
