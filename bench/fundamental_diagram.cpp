@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "bench/plot_panel.hpp"
+#include "bench/seed_list.hpp"
 #include "report/drawing.hpp"
 #include "tests/world/experiment.hpp"
 #include "world/experiment_layouts.hpp"
@@ -58,19 +59,10 @@ double bottleneck_specific_flow(double width_m, std::uint64_t seed) {
 
 int main(int argc, char** argv) {
   const std::string out = argc > 1 ? argv[1] : "fundamental_diagram.png";
-  std::vector<std::uint64_t> seeds;
-  for (int i = 2; i < argc; ++i) {
-    char* rest = nullptr;
-    seeds.push_back(std::strtoull(argv[i], &rest, 10));
-    if (*rest != 0 || seeds.back() == 0) {
-      std::fprintf(stderr,
-                   "usage: fundamental_diagram [OUT.png [SEED...]]: seeds are whole numbers from "
-                   "1, got %s\n",
-                   argv[i]);
-      return 2;
-    }
-  }
-  if (seeds.empty()) seeds = {1, 2};
+  const auto parsed =
+      argus::bench::seed_list(argc, argv, 2, "fundamental_diagram [OUT.png [SEED ...]]");
+  if (!parsed) return 2;
+  const std::vector<std::uint64_t>& seeds = *parsed;
   std::vector<diagram_point> block;
   std::printf(
       "Fundamental diagram, block of people in a corridor 4 m wide (area 4 m x 4 m, "

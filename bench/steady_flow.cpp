@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "bench/plot_panel.hpp"
+#include "bench/seed_list.hpp"
 #include "report/drawing.hpp"
 
 namespace {
@@ -108,9 +109,9 @@ bool print_bins(const char* method, const std::vector<bin>& bins, double max_flo
 
 int main(int argc, char** argv) {
   const std::string out = argc > 1 ? argv[1] : "steady_flow.png";
-  std::vector<std::uint64_t> seeds;
-  for (int i = 2; i < argc; ++i) seeds.push_back(std::stoull(argv[i]));
-  if (seeds.empty()) seeds = {1, 2};
+  const auto parsed = argus::bench::seed_list(argc, argv, 2, "steady_flow [OUT.png [SEED ...]]");
+  if (!parsed) return 2;
+  const std::vector<std::uint64_t>& seeds = *parsed;
   const std::string csv_path = out.substr(0, out.rfind('.')) + ".csv";
   std::ofstream csv(csv_path);
   csv << "kind,seed,width_m,exit_m,inflow_per_s,people,density_per_m2,speed_mps,"
