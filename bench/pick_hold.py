@@ -22,23 +22,33 @@ BINS = [(0, 20), (20, 30), (30, 50), (50, 100_000)]
 QUICK_LOSS_S = 2.0
 
 
+def leader_rows(task, tracks):
+    """The rows of tracks.csv of the task's first leader (the camera it was given to)."""
+    return [
+        r
+        for r in tracks
+        if int(r["task"]) == task["task"]
+        and r["role"] == "leader"
+        and int(r["camera"]) == task["camera"]
+    ]
+
+
+def first_off_her(rows, her: str):
+    """The first row whose box is not on her (on nobody, someone else, or not found), or None."""
+    return next((r for r in rows if r["truth"] != her), None)
+
+
 def tasks_of(run: Path):
     metrics = json.loads((run / "metrics.json").read_text())
     with (run / "tracks.csv").open() as f:
         tracks = list(csv.DictReader(f))
     for task in metrics["tasks"]:
         her = str(task["pedestrian"])
-        rows = [
-            r
-            for r in tracks
-            if int(r["task"]) == task["task"]
-            and r["role"] == "leader"
-            and int(r["camera"]) == task["camera"]
-        ]
+        rows = leader_rows(task, tracks)
         if not rows:
             continue
         start = float(rows[0]["t"])
-        first_off = next((r for r in rows if r["truth"] != her), None)
+        first_off = first_off_her(rows, her)
         end = float(first_off["t"]) if first_off else float(rows[-1]["t"])
         yield {
             "seed": metrics["seed"],

@@ -28,6 +28,8 @@ import json
 import sys
 from pathlib import Path
 
+from pick_hold import first_off_her, leader_rows
+
 SERVED = 0.05
 EARLY_S = 1.0
 NO_CAMERA = 0.5
@@ -64,7 +66,7 @@ def cause(task, tracks, events) -> dict:
     her = str(task["pedestrian"])
     number = task["task"]
     mine = [r for r in tracks if int(r["task"]) == number]
-    leader = [r for r in mine if r["role"] == "leader" and int(r["camera"]) == task["camera"]]
+    leader = leader_rows(task, mine)
     uncovered = task["uncovered"]
     found = []  # (time, cause, details)
     for e in events:
@@ -80,7 +82,7 @@ def cause(task, tracks, events) -> dict:
             break
     if leader:
         start = float(leader[0]["t"])
-        first_off = next((r for r in leader if r["truth"] != her), None)
+        first_off = first_off_her(leader, her)
         if first_off is not None and float(first_off["t"]) - start < EARLY_S:
             at = float(first_off["t"])
             found.append(
