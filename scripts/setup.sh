@@ -9,6 +9,7 @@ argus_packages=(
   build-essential cmake ninja-build ccache pkg-config git
   libcaf-dev libeigen3-dev libopencv-dev libmimalloc-dev libpcg-cpp-dev
   libxxhash-dev  # the field cache's checksum (world/field_cache.cpp)
+  libjpeg-dev  # libjpeg-turbo: the imaging model's JPEG (vision/jpeg_codec.cpp)
   libssl-dev openssl iproute2  # TLS between processes; the tests' certificates and namespaces
   libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri
   libyaml-cpp-dev libcli11-dev libspdlog-dev libfmt-dev nlohmann-json3-dev

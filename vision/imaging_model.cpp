@@ -4,12 +4,12 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
 #include <vector>
 
 #include "config/derive_seed.hpp"
+#include "vision/jpeg_codec.hpp"
 
 namespace argus::vision {
 namespace {
@@ -307,13 +307,8 @@ cv::Mat jpeg_round_trip(const cv::Mat& frame, int quality, std::size_t* encoded_
 
 cv::Mat jpeg_round_trip(const cv::Mat& frame, int quality, std::vector<std::uint8_t>& encoded) {
   require_bgr(frame, "jpeg_round_trip");
-  if (!cv::imencode(".jpg", frame, encoded,
-                    {cv::IMWRITE_JPEG_QUALITY, std::clamp(quality, 1, 100)})) {
-    throw std::runtime_error("jpeg_round_trip: JPEG encoding failed");
-  }
-  cv::Mat out = cv::imdecode(encoded, cv::IMREAD_COLOR);
-  if (out.empty()) throw std::runtime_error("jpeg_round_trip: JPEG decoding failed");
-  return out;
+  encode_jpeg(frame, quality, encoded);
+  return decode_jpeg(encoded);
 }
 
 }  // namespace argus::vision

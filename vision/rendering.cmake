@@ -21,9 +21,12 @@ list(APPEND argus_vision_sources
   ${CMAKE_CURRENT_LIST_DIR}/feed_mosaic.cpp
   ${CMAKE_CURRENT_LIST_DIR}/floor_estimate.cpp
   ${CMAKE_CURRENT_LIST_DIR}/imaging_model.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/jpeg_codec.cpp
   ${CMAKE_CURRENT_LIST_DIR}/pedestrian_mesh.cpp
   ${CMAKE_CURRENT_LIST_DIR}/ptz_camera.cpp
   ${CMAKE_CURRENT_LIST_DIR}/renderer.cpp
   ${CMAKE_CURRENT_LIST_DIR}/scene_mesh.cpp)
+# libjpeg-turbo for the imaging model's JPEG (jpeg_codec.cpp; Debian's libjpeg-dev).
+find_package(JPEG REQUIRED)
 # argus_world: the renderer draws the station and a snapshot's pedestrians.
-list(APPEND argus_vision_private_libs argus_world opencv_imgcodecs ${argus_egl_libs})
+list(APPEND argus_vision_private_libs argus_world opencv_imgcodecs JPEG::JPEG ${argus_egl_libs})
