@@ -2,8 +2,8 @@
 
 // JPEG through libjpeg-turbo itself, BGR in and out. cv::imencode and cv::imdecode call the
 // same library with the same settings (baseline, 4:2:0, the accurate DCT, fancy upsampling),
-// so the bytes and the pixels are the same; but OpenCV swaps BGR to RGB and back a row at a
-// time around the codec, which took half of every camera frame's JPEG round trip
+// so the bytes and the pixels are the same; but OpenCV's code around the codec (its own
+// row-by-row colour conversion and copies) cost as much as the codec in a pixel run's profile
 // (bench/RESULTS.md, "The JPEG round trip without OpenCV's row copies").
 
 #include <cstdint>
