@@ -1,7 +1,8 @@
 #include "actors/display_relay.hpp"
 
-#include <opencv2/imgcodecs.hpp>
 #include <utility>
+
+#include "vision/jpeg_codec.hpp"
 
 namespace argus::actors {
 
@@ -42,7 +43,7 @@ void display_relay::turn_done(int camera, std::int64_t tick, const vision::ptz_s
   // An encode per sensed frame of every camera would cost a large pixel run dearly, for frames
   // no page shows.
   if (!image.empty() && watched) {
-    cv::imencode(".jpg", image, shown.jpeg, {cv::IMWRITE_JPEG_QUALITY, display_jpeg_quality});
+    vision::encode_jpeg(image, display_jpeg_quality, shown.jpeg);
     for (const auto& look : looks)
       if (look.found)
         shown.boxes.insert(shown.boxes.end(),

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "opencv2/imgcodecs.hpp"
+#include "vision/jpeg_codec.hpp"
 
 namespace argus::actors {
 namespace {
@@ -122,7 +122,7 @@ mjpeg_avi_writer::~mjpeg_avi_writer() {
 
 void mjpeg_avi_writer::write(const cv::Mat& bgr) {
   CV_Assert(open_ && bgr.type() == CV_8UC3 && bgr.size() == size_);
-  cv::imencode(".jpg", bgr, jpeg_, {cv::IMWRITE_JPEG_QUALITY, quality_});
+  vision::encode_jpeg(bgr, quality_, jpeg_);
   const auto size = static_cast<std::uint32_t>(jpeg_.size());
   index_.push_back({static_cast<std::uint32_t>(out_.tellp() - movi_start), size});
   largest_frame_ = std::max(largest_frame_, size);

@@ -1,9 +1,9 @@
 #pragma once
 
 // A Motion-JPEG video in an AVI file (RIFF: header list, frame list, index), each frame a JPEG
-// from cv::imencode. Written here rather than through cv::VideoWriter so that `argus` does not
-// load OpenCV's video I/O module, which pulls in about a hundred shared libraries (FFmpeg,
-// GStreamer) that start-up would pay for on every command.
+// from vision::encode_jpeg (the bytes cv::imencode writes). Written here rather than through
+// cv::VideoWriter so that `argus` does not load OpenCV's video I/O module, which pulls in about a
+// hundred shared libraries (FFmpeg, GStreamer) that start-up would pay for on every command.
 
 #include <cstdint>
 #include <filesystem>

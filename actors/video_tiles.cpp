@@ -1,12 +1,12 @@
 #include "actors/video_tiles.hpp"
 
 #include <cstring>
-#include <opencv2/imgcodecs.hpp>
 #include <stdexcept>
 #include <utility>
 
 #include "fmt/format.h"
 #include "vision/imaging_model.hpp"
+#include "vision/jpeg_codec.hpp"
 
 namespace argus::actors {
 
@@ -77,7 +77,14 @@ video_tile to_tile(const render_result& result) {
 render_result from_tile(video_tile tile, std::optional<vision::imaging_model> imaging) {
   render_result out;
   if (tile.jpeg) {
-    out.image = cv::imdecode(tile.bytes, cv::IMREAD_COLOR);
+    try {
+      out.image = vision::decode_jpeg(tile.bytes);
+    } catch (const std::runtime_error& e) {
+      throw std::invalid_argument(
+          fmt::format("a video tile of {}x{} pixels came with {} bytes that "
+                      "are not a JPEG: {}",
+                      tile.width_px, tile.height_px, tile.bytes.size(), e.what()));
+    }
     if (out.image.cols != tile.width_px || out.image.rows != tile.height_px)
       throw std::invalid_argument(fmt::format(
           "a video tile of {}x{} pixels came with {} bytes of JPEG that decode to {}x{}",

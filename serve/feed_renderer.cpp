@@ -1,8 +1,8 @@
 #include "serve/feed_renderer.hpp"
 
-#include "opencv2/imgcodecs.hpp"
 #include "opencv2/imgproc.hpp"
 #include "sensing/operator_view.hpp"
+#include "vision/jpeg_codec.hpp"
 #include "vision/ptz_camera.hpp"
 
 namespace argus::serve {
@@ -16,7 +16,7 @@ constexpr std::uint64_t display_seed_offset = 0x5e7e'd15b'1a70ULL;
 
 std::vector<unsigned char> encode(const cv::Mat& image) {
   std::vector<unsigned char> out;
-  cv::imencode(".jpg", image, out, {cv::IMWRITE_JPEG_QUALITY, 80});
+  vision::encode_jpeg(image, 80, out);
   return out;
 }
 
