@@ -277,6 +277,10 @@ struct sensing_settings {
   /// Pixel sensing: the same track is also spared it while its box is less than this many
   /// pixels tall (vision::tracker_settings::surround_grace_height_px); 0, the default: never.
   int surround_grace_height_px = 0;
+  /// Pixel sensing: a live track's box in its search window is taken for background only once
+  /// it has failed the figure-ground test in this many frames running
+  /// (vision::tracker_settings::surround_patience_frames); 1, the default: at the first.
+  int surround_patience_frames = 1;
   /// Pixel sensing: a live track is kept on a box in its search window scoring above this,
   /// while any other find must score above rho, 0.4 (vision::tracker_settings::track_rho); 0.4,
   /// the default, is the paper's one threshold.

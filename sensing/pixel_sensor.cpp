@@ -22,6 +22,7 @@ vision::tracker_settings pixel_sensor::settings_for(const config::sensing_settin
   settings.max_surround_match = sensing.max_surround_match;
   settings.surround_grace_frames = sensing.surround_grace_frames;
   settings.surround_grace_height_px = sensing.surround_grace_height_px;
+  settings.surround_patience_frames = sensing.surround_patience_frames;
   settings.track_rho = sensing.track_rho;
   if (sensing.halves_rho > 0.0) settings.halves_rho = sensing.halves_rho;
   return settings;

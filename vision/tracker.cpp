@@ -51,7 +51,13 @@ void tracker::start(const cv::Rect& box) {
   // The signature was taken from this box: the model is her at this size already.
   confirmed_ = 0;
   on_pick_ = true;
+  surround_strikes_ = 0;
   model_height_ = box.height;
+}
+
+bool tracker::taken_for_background(const cv::Mat& bin_indices, const cv::Rect& box) const {
+  return settings_.max_surround_match < 1.0 &&
+         surround_match(bin_indices, box, model_.bins()) > settings_.max_surround_match;
 }
 
 void tracker::update_model(const cv::Mat& bin_indices, const cv::Rect& box) {
@@ -83,8 +89,7 @@ std::optional<track_observation> tracker::find_in(const cv::Mat& bin_indices,
   auto found = localizer_.localize(b, histogram_scorer(indices, model_));
   if (found.empty()) return std::nullopt;
   const auto background = [&](const cv::Rect& box) {
-    return figure_ground && settings_.max_surround_match < 1.0 &&
-           surround_match(bin_indices, box, model_.bins()) > settings_.max_surround_match;
+    return figure_ground && taken_for_background(bin_indices, box);
   };
   if (check) {
     for (const auto& region : found) {
@@ -150,9 +155,14 @@ track_observation tracker::update(const cv::Mat& bgr, const find_check& given_ch
     tracking.rho = settings_.track_rho.value_or(settings_.rho);
     const bool in_grace = on_pick_ && (confirmed_ < settings_.surround_grace_frames ||
                                        box_->height < settings_.surround_grace_height_px);
+    const bool patient = surround_strikes_ + 1 < settings_.surround_patience_frames;
     seen = find_in(indices, window_around(*box_, settings_.search_margin) & frame, tracking,
-                   !in_grace, check);
+                   !in_grace && !patient, check);
     in_window = seen.has_value();
+    // Kept without the test, the box counts a strike if it fails it; one that passes ends them.
+    if (seen && !in_grace)
+      surround_strikes_ =
+          patient && taken_for_background(indices, seen->box) ? surround_strikes_ + 1 : 0;
   } else if (searching_locally) {
     // Where she was lost she is likely to reappear (from behind someone, or as the camera
     // stops); the whole frame holds look-alikes. The window grows by a box size a frame.
@@ -164,11 +174,13 @@ track_observation tracker::update(const cv::Mat& bgr, const find_check& given_ch
   }
   if (!seen) {
     on_pick_ = false;
+    surround_strikes_ = 0;
     lost_ = true;
     ++lost_frames_;
     confirmed_ = 0;
     return {false, box_.value_or(cv::Rect{}), 0.0};
   }
+  if (!in_window) surround_strikes_ = 0;
   lost_ = false;
   lost_frames_ = 0;
   box_ = seen->box;

@@ -67,6 +67,14 @@ struct tracker_settings {
   /// The same track is also spared the test while its box is less than this many pixels tall:
   /// until the camera has zoomed on her, her ring is a few pixels of floor, not a test.
   int surround_grace_height_px = 0;
+  /// A live track's box in its search window is taken for background only once it has matched
+  /// its surround in this many frames running; before that it is still hers. 1: at the first
+  /// such frame. Her own box matches its ring for a frame now and then without being
+  /// background: in a queue of people dressed like her, or near the camera, where she is wider
+  /// than the kernel's 1 : 3 box and the ring holds her own sides; a rejection then sends the
+  /// tracker to the whole frame, where a look-alike passes (bench/RESULTS.md, "her own box taken
+  /// for background").
+  int surround_patience_frames = 1;
   /// A live track is kept on a box in its search window that scores above this; a find
   /// anywhere else (the whole frame, a lost track) must still score above rho. Unset: rho, the
   /// paper's one threshold.
@@ -137,6 +145,8 @@ class tracker {
                                                  const find_check& check);
 
   void update_model(const cv::Mat& bin_indices, const cv::Rect& box);
+  /// The figure-ground test (max_surround_match): `box` matches its ring too well to be her.
+  bool taken_for_background(const cv::Mat& bin_indices, const cv::Rect& box) const;
 
   color_histogram target_;
   std::optional<signature_halves> halves_target_;
@@ -159,6 +169,9 @@ class tracker {
   int confirmed_ = 0;
   // Whether every frame since start() found her in the window (confirmed_ counts them).
   bool on_pick_ = false;
+  // Frames running whose window find matched its surround and was kept all the same
+  // (surround_patience_frames).
+  int surround_strikes_ = 0;
   // The box height the model was last taken at (0: a signature from a message, not yet found).
   int model_height_ = 0;
   int model_updates_ = 0;

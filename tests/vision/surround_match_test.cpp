@@ -109,5 +109,36 @@ TEST_F(grey_top_pick, the_operators_pick_is_spared_the_test_while_her_box_is_sma
   EXPECT_FALSE(tall.update(with_her).found) << "her box is taller than the limit: tested";
 }
 
+// surround_patience_frames: a live track's box that fails the test is still hers until it has
+// failed in that many frames running; a frame that passes starts the count again.
+TEST_F(grey_top_pick, a_box_is_taken_for_background_only_after_its_patience) {
+  tracker at_once(signature, strict);
+  at_once.start(her);
+  EXPECT_FALSE(at_once.update(with_her).found) << "patience 1: refused at the first failure";
+
+  strict.surround_patience_frames = 3;
+  tracker patient(signature, strict);
+  patient.start(her);
+  EXPECT_TRUE(patient.update(with_her).found) << "first failure";
+  EXPECT_TRUE(patient.update(with_her).found) << "second failure";
+  EXPECT_FALSE(patient.update(with_her).found) << "the third in a row: background";
+  EXPECT_FALSE(patient.update(with_her).found)
+      << "a lost track's finds elsewhere are tested at once";
+
+  // On red her grey top stands out: her ring matches her little, and the strikes end.
+  cv::Mat on_red(240, 320, CV_8UC3, red);
+  draw_figure(on_red, 100);
+  ASSERT_LT(surround_match(bin_index_image(on_red, histogram_bins{}), her, histogram_bins{}),
+            strict.max_surround_match);
+  tracker reset(signature, strict);
+  reset.start(her);
+  EXPECT_TRUE(reset.update(with_her).found);
+  EXPECT_TRUE(reset.update(with_her).found);
+  EXPECT_TRUE(reset.update(on_red).found) << "passes the test";
+  EXPECT_TRUE(reset.update(with_her).found) << "the count started again";
+  EXPECT_TRUE(reset.update(with_her).found);
+  EXPECT_FALSE(reset.update(with_her).found);
+}
+
 }  // namespace
 }  // namespace argus::vision
