@@ -72,8 +72,8 @@ struct tracker_settings {
   /// such frame. Her own box matches its ring for a frame now and then without being
   /// background: in a queue of people dressed like her, or near the camera, where she is wider
   /// than the kernel's 1 : 3 box and the ring holds her own sides; a rejection then sends the
-  /// tracker to the whole frame, where a look-alike passes (bench/RESULTS.md, "her own box taken
-  /// for background").
+  /// tracker to the whole frame, where a look-alike passes. Patience alone serves Fig. 19 worse
+  /// (bench/RESULTS.md, "Her own box taken for background").
   int surround_patience_frames = 1;
   /// A live track is kept on a box in its search window that scores above this; a find
   /// anywhere else (the whole frame, a lost track) must still score above rho. Unset: rho, the
