@@ -281,6 +281,9 @@ struct sensing_settings {
   /// it has failed the figure-ground test in this many frames running
   /// (vision::tracker_settings::surround_patience_frames); 1, the default: at the first.
   int surround_patience_frames = 1;
+  /// The figure-ground test against the ring's sides, K or more of them
+  /// (vision::tracker_settings::surround_sides); 0, the default: against the whole ring.
+  int surround_sides = 0;
   /// Pixel sensing: a live track is kept on a box in its search window scoring above this,
   /// while any other find must score above rho, 0.4 (vision::tracker_settings::track_rho); 0.4,
   /// the default, is the paper's one threshold.

@@ -30,7 +30,7 @@ constexpr std::array<std::string_view, 10> scenario_keys{
     "name",       "run",     "world", "cameras", "network",
     "controller", "sensing", "tasks", "faults",  "placement"};
 constexpr std::array<std::string_view, 3> placement_keys{"policy", "crowd", "video"};
-constexpr std::array<std::string_view, 16> sensing_keys{"mode",
+constexpr std::array<std::string_view, 17> sensing_keys{"mode",
                                                         "sensor_model",
                                                         "tracker_scales",
                                                         "ego_motion",
@@ -41,6 +41,7 @@ constexpr std::array<std::string_view, 16> sensing_keys{"mode",
                                                         "surround_grace_frames",
                                                         "surround_grace_height_px",
                                                         "surround_patience_frames",
+                                                        "surround_sides",
                                                         "track_rho",
                                                         "halves_rho",
                                                         "identity",
@@ -541,6 +542,7 @@ class scenario_parser {
                  value_bounds::closed(0, 100'000));
     sensing.read("surround_patience_frames", out.surround_patience_frames,
                  value_bounds::closed(1, 1'000'000));
+    sensing.read("surround_sides", out.surround_sides, value_bounds::closed(0, 4));
     sensing.read("track_rho", out.track_rho, value_bounds::closed(0.0, 1.0));
     sensing.read("halves_rho", out.halves_rho, value_bounds::closed(0.0, 1.0));
     sensing.read("identity", out.identity);

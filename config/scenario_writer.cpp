@@ -282,6 +282,7 @@ std::string to_yaml(const scenario& s) {
   out.entry(1, "surround_grace_frames", fmt::format("{}", s.sensing.surround_grace_frames));
   out.entry(1, "surround_grace_height_px", fmt::format("{}", s.sensing.surround_grace_height_px));
   out.entry(1, "surround_patience_frames", fmt::format("{}", s.sensing.surround_patience_frames));
+  out.entry(1, "surround_sides", fmt::format("{}", s.sensing.surround_sides));
   out.entry(1, "track_rho", number(s.sensing.track_rho));
   out.entry(1, "halves_rho", number(s.sensing.halves_rho));
   out.entry(1, "identity", yaml_name(s.sensing.identity));

@@ -23,6 +23,7 @@ vision::tracker_settings pixel_sensor::settings_for(const config::sensing_settin
   settings.surround_grace_frames = sensing.surround_grace_frames;
   settings.surround_grace_height_px = sensing.surround_grace_height_px;
   settings.surround_patience_frames = sensing.surround_patience_frames;
+  settings.surround_sides = sensing.surround_sides;
   settings.track_rho = sensing.track_rho;
   if (sensing.halves_rho > 0.0) settings.halves_rho = sensing.halves_rho;
   return settings;

@@ -56,8 +56,11 @@ void tracker::start(const cv::Rect& box) {
 }
 
 bool tracker::taken_for_background(const cv::Mat& bin_indices, const cv::Rect& box) const {
-  return settings_.max_surround_match < 1.0 &&
-         surround_match(bin_indices, box, model_.bins()) > settings_.max_surround_match;
+  if (settings_.max_surround_match >= 1.0) return false;
+  if (settings_.surround_sides == 0)
+    return surround_match(bin_indices, box, model_.bins()) > settings_.max_surround_match;
+  return background_by_sides(surround_side_matches(bin_indices, box, model_.bins()),
+                             settings_.max_surround_match, settings_.surround_sides);
 }
 
 void tracker::update_model(const cv::Mat& bin_indices, const cv::Rect& box) {

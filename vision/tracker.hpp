@@ -75,6 +75,13 @@ struct tracker_settings {
   /// tracker to the whole frame, where a look-alike passes. Patience alone serves Fig. 19 worse
   /// (bench/RESULTS.md, "Her own box taken for background").
   int surround_patience_frames = 1;
+  /// 0: the figure-ground test matches the box against its whole ring. K (1-4): against each
+  /// of the ring's four sides on its own (surround_side_matches()), and the box is taken for
+  /// background when K or more sides match it more than max_surround_match (or every side
+  /// inside the image, where fewer than K are: a box in a corner has two). Her neighbours in a
+  /// queue, or her own arms near the camera, fill two sides; the floor at her feet does not.
+  /// By sides Fig. 19 is served worse (bench/RESULTS.md, "The figure-ground test by sides").
+  int surround_sides = 0;
   /// A live track is kept on a box in its search window that scores above this; a find
   /// anywhere else (the whole frame, a lost track) must still score above rho. Unset: rho, the
   /// paper's one threshold.

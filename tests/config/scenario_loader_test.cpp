@@ -405,6 +405,7 @@ TEST(scenario_loader, trackers_keep_their_signature_and_search_the_whole_frame_u
   EXPECT_EQ(paper.sensing.surround_grace_frames, 0);
   EXPECT_EQ(paper.sensing.surround_grace_height_px, 0);
   EXPECT_EQ(paper.sensing.surround_patience_frames, 1);
+  EXPECT_EQ(paper.sensing.surround_sides, 0);
   EXPECT_EQ(paper.sensing.track_rho, 0.4);
   EXPECT_EQ(paper.sensing.halves_rho, 0.0);
   EXPECT_EQ(paper.sensing.identity, config::identity_source::appearance);
@@ -413,6 +414,7 @@ TEST(scenario_loader, trackers_keep_their_signature_and_search_the_whole_frame_u
       "sensing: {signature_update: true, reacquire_margin: 0.05, local_search_frames: 30,\n"
       "          max_surround_match: 0.65, surround_grace_frames: 15,\n"
       "          surround_grace_height_px: 40, surround_patience_frames: 2,\n"
+      "          surround_sides: 3,\n"
       "          track_rho: 0.3, halves_rho: 0.45,\n"
       "          identity: ground_truth}\n"
       "controller: {bid_evidence_time: 1 s, bid_min_found_fraction: 0.6,\n"
@@ -422,6 +424,7 @@ TEST(scenario_loader, trackers_keep_their_signature_and_search_the_whole_frame_u
   EXPECT_EQ(ours.sensing.surround_grace_frames, 15);
   EXPECT_EQ(ours.sensing.surround_grace_height_px, 40);
   EXPECT_EQ(ours.sensing.surround_patience_frames, 2);
+  EXPECT_EQ(ours.sensing.surround_sides, 3);
   EXPECT_EQ(ours.sensing.track_rho, 0.3);
   EXPECT_EQ(ours.sensing.halves_rho, 0.45);
   EXPECT_EQ(ours.sensing.identity, config::identity_source::ground_truth);
@@ -440,6 +443,8 @@ TEST(scenario_loader, trackers_keep_their_signature_and_search_the_whole_frame_u
   EXPECT_FALSE(problems_of([] {
                  parse_scenario("sensing: {surround_patience_frames: 0}\n", "a.yaml");
                }).empty());
+  EXPECT_FALSE(
+      problems_of([] { parse_scenario("sensing: {surround_sides: 5}\n", "a.yaml"); }).empty());
   EXPECT_FALSE(
       problems_of([] { parse_scenario("sensing: {track_rho: 1.2}\n", "a.yaml"); }).empty());
   EXPECT_FALSE(

@@ -97,6 +97,7 @@ TEST(scenario_writer, round_trips_awkward_values_exactly) {
   original.sensing.surround_grace_frames = 15;
   original.sensing.surround_grace_height_px = 40;
   original.sensing.surround_patience_frames = 2;
+  original.sensing.surround_sides = 3;
   original.sensing.track_rho = 0.3;
   original.sensing.halves_rho = 0.45;
   original.controller.share_model = true;

@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+
 #include "opencv2/imgproc.hpp"
 #include "vision/tracker.hpp"
 
@@ -138,6 +140,79 @@ TEST_F(grey_top_pick, a_box_is_taken_for_background_only_after_its_patience) {
   EXPECT_TRUE(reset.update(with_her).found) << "the count started again";
   EXPECT_TRUE(reset.update(with_her).found);
   EXPECT_FALSE(reset.update(with_her).found);
+}
+
+// A queue of three people in red tops and blue trousers, shoulder to shoulder against the wall;
+// returns the middle one's box.
+cv::Rect draw_queue(cv::Mat& image) {
+  for (const int x : {80, 100, 120}) {
+    cv::rectangle(image, cv::Rect(x, 80, 20, 30), red, cv::FILLED);
+    cv::rectangle(image, cv::Rect(x, 110, 20, 30), blue, cv::FILLED);
+  }
+  return {100, 80, 20, 60};
+}
+
+std::array<double, 4> sides(const cv::Mat& bgr, const cv::Rect& box) {
+  const histogram_bins bins;
+  return surround_side_matches(bin_index_image(bgr, bins), box, bins);
+}
+
+TEST(surround_side_matches, her_neighbours_match_her_at_her_sides_only) {
+  cv::Mat image(240, 320, CV_8UC3, wall);
+  const auto her = draw_queue(image);
+  const auto matched = sides(image, her);
+  EXPECT_GT(matched[0], 0.99) << "left: the neighbour dressed like her";
+  EXPECT_GT(matched[1], 0.99) << "right";
+  EXPECT_LT(matched[2], 0.01) << "above: the wall";
+  EXPECT_LT(matched[3], 0.01) << "below";
+  EXPECT_NEAR(match(image, her), 0.5, 0.05) << "the whole ring is half her neighbours";
+  EXPECT_EQ(sides_matching(matched, 0.4), 2);
+  const auto wall_patch = sides(image, {240, 40, 20, 60});
+  EXPECT_EQ(sides_matching(wall_patch, 0.99), 4) << "a patch of wall matches all round";
+}
+
+TEST(surround_side_matches, a_side_outside_the_image_does_not_count) {
+  const cv::Mat image(240, 320, CV_8UC3, wall);
+  const auto matched = sides(image, {0, 0, 20, 60});
+  EXPECT_EQ(matched[0], -1.0) << "left of the image";
+  EXPECT_EQ(matched[2], -1.0) << "above the image";
+  EXPECT_GT(matched[1], 0.99);
+  EXPECT_GT(matched[3], 0.99);
+  EXPECT_EQ(sides_matching(matched, 0.5), 2);
+  EXPECT_TRUE(background_by_sides(matched, 0.5, 3)) << "every side inside the image matches";
+  EXPECT_FALSE(background_by_sides({-1.0, 0.9, -1.0, 0.1}, 0.5, 3)) << "one of two";
+  EXPECT_FALSE(background_by_sides({-1.0, -1.0, -1.0, -1.0}, 0.5, 1)) << "no side to test";
+}
+
+// surround_sides: her box in a queue of look-alikes matches the whole ring as much as a patch of
+// wall half her colour does; counted by sides, the wall is refused and she is kept.
+TEST(surround_side_matches, a_tracker_testing_by_sides_keeps_her_in_a_queue_and_refuses_the_wall) {
+  cv::Mat queue(240, 320, CV_8UC3, wall);
+  const auto her = draw_queue(queue);
+  const auto in_red = color_histogram::of_region(queue, her).normalized();
+  tracker_settings ring;
+  ring.max_surround_match = 0.4;
+  tracker whole(in_red, ring);
+  whole.start(her);
+  EXPECT_FALSE(whole.update(queue).found) << "the whole ring refuses her among her neighbours";
+
+  tracker_settings by_sides = ring;
+  by_sides.surround_sides = 3;
+  tracker kept(in_red, by_sides);
+  kept.start(her);
+  const auto seen = kept.update(queue);
+  ASSERT_TRUE(seen.found) << "two sides of four match her: still a figure";
+  EXPECT_GT((seen.box & cv::Rect(80, 80, 60, 60)).area(), her.area() / 2);
+
+  cv::Mat with_her(240, 320, CV_8UC3, wall);
+  const auto grey_top = draw_figure(with_her, 100);
+  const auto signature = color_histogram::of_region(with_her, grey_top).normalized();
+  const cv::Mat empty(240, 320, CV_8UC3, wall);
+  by_sides.max_surround_match = 0.65;
+  EXPECT_FALSE(tracker(signature, by_sides).update(empty).found)
+      << "a grey patch matches the wall on every side";
+  by_sides.surround_sides = 4;
+  EXPECT_FALSE(tracker(signature, by_sides).update(empty).found) << "on all four";
 }
 
 }  // namespace
