@@ -8,12 +8,14 @@
 #include <iostream>
 #include <map>
 #include <thread>
+#include <vector>
 
 #include "actors/run_scenario.hpp"
 #include "apps/chaos_plan.hpp"
 #include "apps/child_process.hpp"
 #include "apps/commands.hpp"
 #include "apps/option_checks.hpp"
+#include "apps/resume_record.hpp"
 #include "apps/set_option.hpp"
 #include "apps/sweep_progress.hpp"
 #include "config/duration.hpp"
@@ -42,6 +44,7 @@ struct chaos_arguments {
   std::uint64_t max_memory_mib = 2048;
   double min_live_share = 0.99;
   bool keep = false;
+  bool fresh = false;
   std::string program;
 };
 
@@ -271,6 +274,31 @@ int run_chaos(const chaos_arguments& args) {
                             : std::filesystem::path("out") / ("chaos_" + scenario.name);
   try {
     std::filesystem::create_directories(dir);
+    // Only what a campaign writes is ours to remove: --out may name a folder with more in it.
+    std::vector<std::filesystem::path> ours;
+    bool has_runs = false;
+    for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+      const auto name = entry.path().filename().string();
+      const bool seed = entry.is_directory() && name.starts_with("seed-");
+      if (seed || name == "chaos.json" || name == "chaos.csv" || name == made_with_file)
+        ours.push_back(entry.path());
+      has_runs = has_runs || seed;
+    }
+    if (args.fresh) {
+      for (const auto& path : ours) std::filesystem::remove_all(path);
+      has_runs = false;
+    }
+    // What a seed's verdict depends on besides the scenario: its schedule and the bounds.
+    const nlohmann::json made_by{{"duration", args.duration},
+                                 {"scenario_sensing_every", args.scenario_sensing_every},
+                                 {"max_messages_per_task_s", bounds.max_messages_per_task_s},
+                                 {"max_rss_kib", bounds.max_rss_kib}};
+    const auto made = made_with(args.program.empty() ? this_executable() : args.program,
+                                config::to_yaml(scenario), made_by);
+    if (const auto refused = check_resume(dir, made, has_runs, "argus chaos")) {
+      std::cerr << *refused << '\n';
+      return bad_input;
+    }
     return campaign(args, std::move(scenario), settings, bounds, dir).execute();
   } catch (const std::exception& e) {
     std::cerr << "argus chaos: " << e.what() << '\n';
@@ -315,6 +343,10 @@ void add_chaos_command(CLI::App& app, int& result) {
                   "0.99)")
       ->check(number_in(0.0, 1.0));
   cmd->add_flag("--keep", args->keep, "Keep every run's folder (default: failing seeds' only)");
+  cmd->add_flag("--fresh", args->fresh,
+                "Remove the folder's earlier seeds first (a campaign resumes by default, and "
+                "refuses a folder whose seeds another argus executable, scenario or setting "
+                "made)");
   cmd->add_option("--argus", args->program,
                   "The argus executable the runs use (default: this one)");
   cmd->callback([args, &result] { result = run_chaos(*args); });

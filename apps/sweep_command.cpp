@@ -13,10 +13,12 @@
 #include "apps/child_process.hpp"
 #include "apps/commands.hpp"
 #include "apps/option_checks.hpp"
+#include "apps/resume_record.hpp"
 #include "apps/sweep_progress.hpp"
 #include "config/duration.hpp"
 #include "config/scenario_error.hpp"
 #include "config/scenario_loader.hpp"
+#include "config/scenario_writer.hpp"
 #include "controller/strategy_registry.hpp"
 #include "fmt/format.h"
 #include "report/binary_file.hpp"
@@ -38,6 +40,7 @@ struct sweep_arguments {
   std::optional<std::string> duration;
   std::string program;
   bool feeds = false;
+  bool fresh = false;
   std::string compare = "mean_coverage";
   double equal_within = 0.0;
 };
@@ -305,7 +308,23 @@ int run_sweep(const sweep_arguments& args) {
   const auto dir = args.out ? std::filesystem::path(*args.out)
                             : std::filesystem::path("out") / ("sweep_" + scenario_name);
   try {
+    if (args.fresh) {
+      std::filesystem::remove_all(dir / "runs");
+      std::filesystem::remove(dir / made_with_file);
+    }
     std::filesystem::create_directories(dir / "runs");
+    // What a run does besides its scenario and --set values: a run folder's name holds those.
+    const nlohmann::json settings{
+        {"duration", args.duration ? nlohmann::json(*args.duration) : nlohmann::json(nullptr)},
+        {"feeds", args.feeds}};
+    const auto made =
+        made_with(args.program.empty() ? this_executable() : args.program,
+                  config::to_yaml(config::load_scenario(args.scenario, {})), settings);
+    if (const auto refused =
+            check_resume(dir, made, !std::filesystem::is_empty(dir / "runs"), "argus sweep")) {
+      std::cerr << *refused << '\n';
+      return bad_input;
+    }
     return sweep(args, parameters, dir).execute();
   } catch (const std::exception& e) {
     std::cerr << "argus sweep: " << e.what() << '\n';
@@ -359,6 +378,9 @@ void add_sweep_command(CLI::App& app, int& result) {
       ->check(CLI::NonNegativeNumber);
   cmd->add_flag("--feeds", args->feeds,
                 "Let each run draw its feeds/ (key frames; runs get --no-feeds by default)");
+  cmd->add_flag("--fresh", args->fresh,
+                "Remove the folder's earlier runs first (a sweep resumes by default, and refuses "
+                "a folder whose runs another argus executable, scenario or --duration made)");
   cmd->add_option("--argus", args->program,
                   "The argus executable the runs use (default: this one)");
   cmd->callback([args, &result] { result = run_sweep(*args); });

@@ -62,3 +62,21 @@ endif()
 if(NOT EXISTS ${OUT}/tight/seed-1/run/events.jsonl)
   message(FATAL_ERROR "a failing seed's run folder was not kept")
 endif()
+# A campaign resumes only what the same argus, scenario and settings made.
+set(again ${ARGUS} chaos ${SCENARIO} --first-seed 3 --seeds 1 --scenario-sensing-every ${EVERY}
+    --out ${OUT}/again)
+execute_process(COMMAND ${again} RESULT_VARIABLE code OUTPUT_QUIET ERROR_VARIABLE err)
+if(NOT code EQUAL 0 OR NOT err MATCHES "1 of 1 runs already done")
+  message(FATAL_ERROR "the same campaign again: exit ${code}, expected seed 3 reused\n${err}")
+endif()
+execute_process(COMMAND ${again} --duration "2 min" RESULT_VARIABLE code OUTPUT_QUIET
+                ERROR_VARIABLE err)
+if(NOT code EQUAL 2 OR NOT err MATCHES "holds runs made with different settings")
+  message(FATAL_ERROR "another --duration: exit ${code}, expected 2\n${err}")
+endif()
+execute_process(COMMAND ${again} --duration "2 min" --fresh RESULT_VARIABLE code OUTPUT_QUIET
+                ERROR_QUIET)
+file(READ ${OUT}/again/seed-3/scenario.yaml shorter)
+if(NOT code EQUAL 0 OR shorter STREQUAL second)
+  message(FATAL_ERROR "--fresh with another --duration: exit ${code}; seed 3 not made again")
+endif()
