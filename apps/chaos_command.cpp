@@ -217,8 +217,14 @@ class campaign {
       std::cout << fmt::format("\n  reproduce: argus run {} --out {}\n",
                                (dir_ / seed_dir_name(s) / "scenario.yaml").string(),
                                (dir_ / seed_dir_name(s) / "again").string());
-      std::cout << fmt::format("  or: argus chaos {} --first-seed {} --seeds 1 --duration '{}'",
-                               args_.scenario, s, args_.duration);
+      // Every setting the seed's schedule and verdict depend on, into a folder of its own:
+      // the campaign's folder would answer with the verdict it already has.
+      std::cout << fmt::format(
+          "  or: argus chaos {} --first-seed {} --seeds 1 --duration '{}' "
+          "--scenario-sensing-every {} --max-messages {} --max-memory-mb {} --fresh --out {}",
+          args_.scenario, s, args_.duration, args_.scenario_sensing_every,
+          bounds_.max_messages_per_task_s, args_.max_memory_mib,
+          (dir_ / fmt::format("again-seed-{}", s)).string());
       for (const auto& o : args_.set) std::cout << fmt::format(" --set '{}'", o);
       std::cout << '\n';
     }
